@@ -1,0 +1,166 @@
+#!/usr/bin/env bash
+# Shared helpers for the set-up, test, demo and CUDA-check entry points.
+# Sourced, not run. Everything here is idempotent: a second run skips finished work.
+
+set -euo pipefail
+
+POLYMECH_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+POLYMECH_CACHE="${POLYMECH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/polymech}"
+POLYMECH_JOBS="${POLYMECH_JOBS:-2}"
+KOKKOS_VERSION_WANTED="3.4.01"
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+log() { printf '[polymech] %s\n' "$*" >&2; }
+die() { printf '[polymech] error: %s\n' "$*" >&2; exit 1; }
+
+# True when every named Debian package is installed.
+packages_installed() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || return 1
+  done
+}
+
+# apt-get with the machine's own sources (used for packages from 'main').
+apt_install() {
+  local missing=() p
+  for p in "$@"; do packages_installed "$p" || missing+=("$p"); done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing Debian packages: ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# A private apt configuration derived from the machine's own sources: the same mirrors and suites,
+# with deb and deb-src entries for main, contrib, non-free and non-free-firmware. The system's lists
+# are never edited; the private list lives in the cache and apt is pointed at it with -o options.
+PRIVATE_APT_DIR="$POLYMECH_CACHE/apt"
+private_apt() {
+  $SUDO apt-get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
+    -o Dir::Etc::SourceParts=/dev/null -o Dir::State::Lists="$PRIVATE_APT_DIR/lists" "$@"
+}
+
+# Print "URI SUITE" for every 'deb' entry of the machine's apt sources (one-line and deb822 forms).
+system_apt_entries() {
+  local f
+  if [ -f /etc/apt/sources.list ]; then
+    sed -e 's/#.*//' /etc/apt/sources.list | awk '$1 == "deb" { i = 2; if ($2 ~ /^\[/) { while ($i !~ /\]$/) i++; i++ } print $i, $(i + 1) }'
+  fi
+  for f in /etc/apt/sources.list.d/*.list; do
+    [ -f "$f" ] || continue
+    sed -e 's/#.*//' "$f" | awk '$1 == "deb" { i = 2; if ($2 ~ /^\[/) { while ($i !~ /\]$/) i++; i++ } print $i, $(i + 1) }'
+  done
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$f" ] || continue
+    awk 'BEGIN { RS = ""; FS = "\n" }
+      {
+        types = ""; uris = ""; suites = "";
+        for (k = 1; k <= NF; k++) {
+          line = $k; sub(/#.*/, "", line);
+          if (line ~ /^Types:/) { sub(/^Types:[ \t]*/, "", line); types = line }
+          else if (line ~ /^URIs:/) { sub(/^URIs:[ \t]*/, "", line); uris = line }
+          else if (line ~ /^Suites:/) { sub(/^Suites:[ \t]*/, "", line); suites = line }
+        }
+        if (types !~ /(^|[ \t])deb([ \t]|$)/) next;
+        nu = split(uris, U, /[ \t]+/); ns = split(suites, S, /[ \t]+/);
+        for (a = 1; a <= nu; a++) for (b = 1; b <= ns; b++) if (U[a] != "" && S[b] != "") print U[a], S[b];
+      }' "$f"
+  done
+}
+
+private_apt_setup() {
+  local stamp="$PRIVATE_APT_DIR/updated.stamp"
+  mkdir -p "$PRIVATE_APT_DIR/lists/partial"
+  if [ ! -s "$PRIVATE_APT_DIR/sources.list" ]; then
+    local entries
+    entries="$(system_apt_entries | grep -E '(debian|ubuntu)' | sort -u || true)"
+    [ -n "$entries" ] || die "no Debian 'deb' entries found in /etc/apt/sources.list{,.d/} to derive a deb-src entry from"
+    echo "$entries" | while read -r uri suite; do
+      echo "deb $uri $suite main contrib non-free non-free-firmware"
+      echo "deb-src $uri $suite main contrib non-free non-free-firmware"
+    done >"$PRIVATE_APT_DIR/sources.list.tmp"
+    mv "$PRIVATE_APT_DIR/sources.list.tmp" "$PRIVATE_APT_DIR/sources.list"
+  fi
+  # Refresh the private index at most once a day.
+  if [ ! -f "$stamp" ] || [ -n "$(find "$stamp" -mmin +1440 2>/dev/null)" ]; then
+    log "updating the private apt index ($PRIVATE_APT_DIR/sources.list)"
+    $SUDO mkdir -p "$PRIVATE_APT_DIR/lists/partial"
+    private_apt update -qq
+    touch "$stamp"
+  fi
+}
+
+# Install packages that may come from contrib / non-free (e.g. nvidia-cuda-toolkit).
+private_apt_install() {
+  local missing=() p
+  for p in "$@"; do packages_installed "$p" || missing+=("$p"); done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  private_apt_setup
+  log "installing Debian packages (private sources): ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
+    -o Dir::Etc::SourceParts=/dev/null -o Dir::State::Lists="$PRIVATE_APT_DIR/lists" \
+    install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# The Kokkos source tree: packages/kokkos from Debian's trilinos source package, extracted once.
+kokkos_source_dir() {
+  local src="$POLYMECH_CACHE/src/kokkos-$KOKKOS_VERSION_WANTED"
+  if [ ! -f "$src/CMakeLists.txt" ]; then
+    private_apt_setup
+    local dl="$POLYMECH_CACHE/src/download"
+    mkdir -p "$dl"
+    if ! ls "$dl"/trilinos_*.orig.tar.* >/dev/null 2>&1; then
+      log "downloading Debian's trilinos source package (for packages/kokkos)"
+      (cd "$dl" && private_apt source --download-only -qq trilinos >/dev/null 2>&1) ||
+        die "apt-get source --download-only trilinos failed (private list: $PRIVATE_APT_DIR/sources.list)"
+    fi
+    local tarball
+    tarball="$(ls "$dl"/trilinos_*.orig.tar.* | head -n 1)"
+    log "extracting packages/kokkos from $(basename "$tarball")"
+    rm -rf "$src.tmp" && mkdir -p "$src.tmp"
+    tar -xf "$tarball" -C "$src.tmp" --strip-components=3 --wildcards '*/packages/kokkos/*'
+    grep -q "Kokkos_VERSION_MINOR 4" "$src.tmp/CMakeLists.txt" ||
+      die "the trilinos source package does not carry Kokkos $KOKKOS_VERSION_WANTED"
+    rm -rf "$src" && mv "$src.tmp" "$src"
+  fi
+  echo "$src"
+}
+
+# build_kokkos <name> <cmake args...>: build and install Kokkos into $POLYMECH_CACHE/<name> once.
+build_kokkos() {
+  local name="$1"; shift
+  local prefix="$POLYMECH_CACHE/$name"
+  if [ -f "$prefix/.polymech-complete" ]; then echo "$prefix"; return 0; fi
+  local src build
+  src="$(kokkos_source_dir)"
+  build="$POLYMECH_CACHE/build/$name"
+  rm -rf "$build" "$prefix" && mkdir -p "$build"
+  log "building Kokkos $KOKKOS_VERSION_WANTED ($name) into $prefix"
+  (cd "$build" && cmake "$src" -G Ninja -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_CXX_STANDARD=17 -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_TESTS=OFF "$@" >"$build/configure.log" 2>&1 &&
+    cmake --build . -j "$POLYMECH_JOBS" >"$build/build.log" 2>&1 && cmake --install . >"$build/install.log" 2>&1) ||
+    die "Kokkos build failed; see $build/configure.log and $build/build.log"
+  touch "$prefix/.polymech-complete"
+  rm -rf "$build"
+  echo "$prefix"
+}
+
+# The host packages every build needs.
+HOST_PACKAGES=(build-essential cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libfftw3-dev
+  python3 python3-matplotlib python3-h5py python3-numpy xz-utils)
+
+# The OpenMP Kokkos to build against: $Kokkos_ROOT if the user points at one, else the cached build.
+openmp_kokkos_root() {
+  if [ -n "${Kokkos_ROOT:-}" ]; then echo "$Kokkos_ROOT"; return 0; fi
+  build_kokkos "kokkos-$KOKKOS_VERSION_WANTED-openmp" -DKokkos_ENABLE_OPENMP=ON \
+    -DCMAKE_POSITION_INDEPENDENT_CODE=ON
+}
+
+setup_host() {
+  apt_install "${HOST_PACKAGES[@]}"
+  KOKKOS_OPENMP_ROOT="$(openmp_kokkos_root)"
+  export KOKKOS_OPENMP_ROOT
+}

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The README's test command: install what is missing, build with warnings as errors, run the test
+# suite, then the CUDA compile gate (every kernel, model, kernel test and benchmark built for CUDA).
+#   bash ci/test.sh            # everything, as CI runs it
+#   bash ci/test.sh --quick    # skip the CUDA compile gate
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+quick=0
+for a in "$@"; do
+  case "$a" in
+    --quick) quick=1 ;;
+    *) die "unknown option '$a' (allowed: --quick)" ;;
+  esac
+done
+cd "$POLYMECH_ROOT"
+bash ci/build.sh ci
+log "running the test suite (ctest, preset ci)"
+ctest --preset ci -j "$POLYMECH_JOBS"
+if [ "$quick" -eq 0 ] && [ -f ci/cuda_check.sh ]; then
+  bash ci/cuda_check.sh
+fi
+log "all tests passed"
