@@ -1,0 +1,223 @@
+// Elastic-wave MPS in 2D plane strain (seed 000 §2.3 and §3): relative displacement with particle
+// rotation, volumetric strain, the translational equation (11), the rotational equation (12) and
+// symplectic Euler (13)-(16).
+//
+// State is the displacement u from the reference lattice x0, not the position: with nanometre waves
+// in a 0.1 m plate, positions in float would lose the signal entirely, while u keeps full relative
+// precision in either type. The pair vector is r_ij = r0_ij + (u_j - u_i).
+//
+// The template flag Rotation selects the `rotation` effect: with it, u_ij subtracts the particles'
+// mean rotation (eq. (6)) and the force kernel also returns the angular acceleration (eq. (12));
+// without it, theta/omega/alpha are never read, written or allocated.
+#pragma once
+
+#include "mps/weight.hpp"
+
+namespace polymech::mps {
+
+// Material and discretisation constants of eq. (11)-(12), in the kernel's precision.
+template <class T>
+struct ElasticParams {
+  T re;       // influence radius r_e
+  T n0;       // reference number density
+  T rho;      // density
+  T c13;      // C13 (= Lame lambda)
+  T c55;      // C55 (= shear modulus mu)
+  T mass;     // particle mass m = rho l0^2 (per unit thickness)
+  T inertia;  // particle moment of inertia I
+};
+
+template <class T>
+struct ElasticFields {
+  VecView<T, 2> x0;  // reference positions r0_i
+  View1<T> inv_r0;   // 1 / |r0_ij| per bond of the family (aligned with family.neighbors)
+  VecView<T, 2> u;   // displacement
+  VecView<T, 2> v;   // velocity
+  VecView<T, 2> a;   // acceleration dv/dt
+  View1<T> e;        // volumetric strain <div u>_i
+  // rotation effect only (empty Views otherwise)
+  View1<T> theta;     // particle rotation angle
+  View1<T> omega;     // angular velocity
+  View1<T> alpha;     // angular acceleration
+  View1<T> sin_theta;  // sin(theta), kept with theta so pair loops need no trigonometry
+  View1<T> half_omc;   // (1 - cos theta) / 2 = sin^2(theta / 2)
+};
+
+// seed 000 eq. (6)-(7): u_ij = r_ij - 1/2 (R_i + R_j) r0_ij, written as
+// (u_j - u_i) + (I - 1/2 (R_i + R_j)) r0_ij so nothing cancels catastrophically. I - R(theta) has
+// entries 1 - cos theta = 2 sin^2(theta/2) and +-sin theta; both come precomputed per particle.
+template <class T>
+KOKKOS_INLINE_FUNCTION Vec2<T> relative_displacement(const Vec2<T>& du, const Vec2<T>& r0, T sin_i, T sin_j,
+                                                     T half_omc_i, T half_omc_j) {
+  const T one_minus_cos = half_omc_i + half_omc_j;  // 1/2 [(1 - cos ti) + (1 - cos tj)]
+  const T sin_mean = T(0.5) * (sin_i + sin_j);
+  return Vec2<T>{{du[0] + one_minus_cos * r0[0] + sin_mean * r0[1], du[1] - sin_mean * r0[0] + one_minus_cos * r0[1]}};
+}
+
+// Everything one pair (bond k = (i, j) of the family) needs, from the reference and current
+// configurations. One square root and one division per pair: 1/|r0| comes per bond from set-up and
+// w = re/r - 1 reuses 1/r.
+template <class T, bool Rotation>
+struct ElasticPair {
+  Vec2<T> r;     // r_ij (current)
+  Vec2<T> uij;   // relative displacement u_ij, eq. (6)
+  T inv_r;       // 1 / |r_ij|
+  T inv_r0;      // 1 / |r0_ij|
+  T w;           // w(|r_ij|), eq. (1)
+
+  KOKKOS_INLINE_FUNCTION ElasticPair(const ElasticFields<T>& f, Index i, Index j, Offset k, T re) {
+    const Vec2<T> r0 = load<2>(f.x0, j) - load<2>(f.x0, i);
+    const Vec2<T> du = load<2>(f.u, j) - load<2>(f.u, i);
+    r = r0 + du;
+    inv_r = T(1) / kx::sqrt(norm2(r));
+    inv_r0 = f.inv_r0(k);
+    w = re * inv_r > T(1) ? re * inv_r - T(1) : T(0);  // eq. (1) for r > 0
+    if constexpr (Rotation)
+      uij = relative_displacement(du, r0, f.sin_theta(i), f.sin_theta(j), f.half_omc(i), f.half_omc(j));
+    else
+      uij = du;
+  }
+};
+
+// 1/|r0_ij| for every bond of the reference family (set-up, once).
+template <class T>
+void reference_bond_lengths(const neighbors::BondFamily& family, const ElasticFields<T>& f) {
+  Kokkos::parallel_for(
+      "polymech::mps::reference_bond_lengths", range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        for (Offset k = family.begin(i); k < family.end(i); ++k)
+          f.inv_r0(k) = T(1) / norm(load<2>(f.x0, family.neighbor(k)) - load<2>(f.x0, i));
+      });
+}
+
+// <div u>_i = d/n0 sum u_ij . r_ij / (|r0_ij| |r_ij|) w  (eq. (4), difference form, with eq. (6)).
+template <class T, bool Rotation>
+void volumetric_strain(const neighbors::BondFamily& family, const ElasticFields<T>& f, const ElasticParams<T>& p) {
+  const T c = T(2) / p.n0;
+  const T re = p.re;
+  Kokkos::parallel_for(
+      Rotation ? "polymech::mps::volumetric_strain_with_rotation" : "polymech::mps::volumetric_strain",
+      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        T s = T(0);
+        for (Offset k = family.begin(i); k < family.end(i); ++k) {
+          const ElasticPair<T, Rotation> q(f, i, family.neighbor(k), k, re);
+          s += dot(q.uij, q.r) * q.w * q.inv_r0 * q.inv_r;
+        }
+        f.e(i) = c * s;
+      });
+}
+
+// seed 000 eq. (11): rho dv/dt = C13 div((div u) I) + 2 C55 lap u, with the symmetric divergence
+// (eq. (4), psi_j + psi_i) and the Laplacian (eq. (5)) applied to u_ij. With Rotation, also
+// eq. (12): each pair's shear force F_ij = m (2 C55 / rho) (2d/n0) u_ij w / |r0|^2 is not central;
+// its moment M = (r_i - r_j) x F_ij is returned to the two particles' spins, I dw_i/dt = -M/2 each,
+// so the total (orbital + spin) angular momentum is conserved.
+template <class T, bool Rotation>
+void elastic_acceleration(const neighbors::BondFamily& family, const ElasticFields<T>& f,
+                          const ElasticParams<T>& p) {
+  const T re = p.re;
+  const T c_vol = p.c13 * T(2) / (p.n0 * p.rho);            // C13 d / (n0 rho)
+  const T c_lap = T(2) * p.c55 * T(4) / (p.n0 * p.rho);     // 2 C55 2d / (n0 rho)
+  const T c_rot = T(0.5) * p.mass / p.inertia * c_lap;     // (m / I) * 1/2
+  Kokkos::parallel_for(
+      Rotation ? "polymech::mps::elastic_acceleration_with_rotation" : "polymech::mps::elastic_acceleration",
+      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const T ei = f.e(i);
+        auto vol = Vec2<T>::zero();
+        auto lap = Vec2<T>::zero();
+        T moment = T(0);
+        for (Offset k = family.begin(i); k < family.end(i); ++k) {
+          const Index j = family.neighbor(k);
+          const ElasticPair<T, Rotation> q(f, i, j, k, re);
+          vol += ((ei + f.e(j)) * q.w * q.inv_r0 * q.inv_r) * q.r;
+          const Vec2<T> shear = (q.w * q.inv_r0 * q.inv_r0) * q.uij;
+          lap += shear;
+          if constexpr (Rotation) moment += cross(q.r, shear);
+        }
+        store<2>(f.a, i, c_vol * vol + c_lap * lap);
+        if constexpr (Rotation) f.alpha(i) = c_rot * moment;
+      });
+}
+
+// seed 000 eqs. (13)-(14): v^{k+1} = v^k + dt a;  r^{k+1} = r^k + dt v^{k+1} (on u).
+template <class T>
+void symplectic_euler(const ElasticFields<T>& f, T dt) {
+  Kokkos::parallel_for(
+      "polymech::mps::symplectic_euler", range(static_cast<std::int64_t>(f.u.extent(0))),
+      KOKKOS_LAMBDA(const std::int64_t i) {
+        for (int k = 0; k < 2; ++k) {
+          f.v(i, k) += dt * f.a(i, k);
+          f.u(i, k) += dt * f.v(i, k);
+        }
+      });
+}
+
+// seed 000 eqs. (15)-(16): omega^{k+1} = omega^k + dt (dw/dt)_sum;  theta^{k+1} = theta^k + dt omega^{k+1}.
+template <class T>
+void rotation_update(const ElasticFields<T>& f, T dt) {
+  Kokkos::parallel_for(
+      "polymech::mps::rotation_update", range(static_cast<std::int64_t>(f.theta.extent(0))),
+      KOKKOS_LAMBDA(const std::int64_t i) {
+        f.omega(i) += dt * f.alpha(i);
+        const T theta = f.theta(i) + dt * f.omega(i);
+        const T h = kx::sin(theta / T(2));
+        f.theta(i) = theta;
+        f.sin_theta(i) = kx::sin(theta);
+        f.half_omc(i) = h * h;
+      });
+}
+
+// Refresh sin(theta) and (1 - cos theta)/2 after theta was set directly (initial states, tests).
+template <class T>
+void rotation_trigonometry(const ElasticFields<T>& f) {
+  Kokkos::parallel_for(
+      "polymech::mps::rotation_trigonometry", range(static_cast<std::int64_t>(f.theta.extent(0))),
+      KOKKOS_LAMBDA(const std::int64_t i) {
+        const T h = kx::sin(f.theta(i) / T(2));
+        f.sin_theta(i) = kx::sin(f.theta(i));
+        f.half_omc(i) = h * h;
+      });
+}
+
+// Energies of the discrete system (host values). The strain energy is the one whose gradient gives
+// the forces above for small displacements: sum_i 1/2 V C13 e_i^2 + sum_pairs 1/2 k_ij |u_ij|^2 with
+// k_ij = m (2 C55 / rho)(2d / n0) w / |r0_ij|^2 (each pair appears twice in a full list, hence 1/4).
+struct ElasticEnergy {
+  double kinetic = 0.0;  // translational + rotational
+  double strain = 0.0;
+  double total() const { return kinetic + strain; }
+};
+
+template <class T, bool Rotation>
+ElasticEnergy elastic_energy(const neighbors::BondFamily& family, const ElasticFields<T>& f,
+                             const ElasticParams<T>& p) {
+  ElasticEnergy out;
+  const T m = p.mass, inertia = p.inertia;
+  T kinetic = T(0);
+  Kokkos::parallel_reduce(
+      "polymech::mps::kinetic_energy", range(family.num_particles),
+      KOKKOS_LAMBDA(const Index i, T& s) {
+        s += T(0.5) * m * (f.v(i, 0) * f.v(i, 0) + f.v(i, 1) * f.v(i, 1));
+        if constexpr (Rotation) s += T(0.5) * inertia * f.omega(i) * f.omega(i);
+      },
+      kinetic);
+  const T re = p.re;
+  const T k_vol = T(0.5) * m * p.c13 / p.rho;
+  const T k_lap = T(0.25) * m * T(2) * p.c55 * T(4) / (p.rho * p.n0);
+  T strain = T(0);
+  Kokkos::parallel_reduce(
+      "polymech::mps::strain_energy", range(family.num_particles),
+      KOKKOS_LAMBDA(const Index i, T& s) {
+        T pairs = T(0);
+        for (Offset k = family.begin(i); k < family.end(i); ++k) {
+          const ElasticPair<T, Rotation> q(f, i, family.neighbor(k), k, re);
+          pairs += q.w * q.inv_r0 * q.inv_r0 * norm2(q.uij);
+        }
+        s += k_vol * f.e(i) * f.e(i) + k_lap * pairs;
+      },
+      strain);
+  out.kinetic = static_cast<double>(kinetic);
+  out.strain = static_cast<double>(strain);
+  return out;
+}
+
+}  // namespace polymech::mps
