@@ -164,3 +164,55 @@ setup_host() {
   KOKKOS_OPENMP_ROOT="$(openmp_kokkos_root)"
   export KOKKOS_OPENMP_ROOT
 }
+
+# --- CUDA compile gate (ci/cuda_check.sh) ----------------------------------------------------------
+# Debian's CUDA 11.8 toolkit (non-free) and g++-11, the newest GCC that CUDA 11.8 accepts as host compiler.
+CUDA_PACKAGES=(nvidia-cuda-toolkit g++-11)
+# Where Debian puts the real nvcc (/usr/bin/nvcc is a shell wrapper around it); headers and libraries
+# live in /usr/include and /usr/lib/x86_64-linux-gnu. POLYMECH_CUDA_ROOT overrides it (a toolkit whose
+# bin/nvcc Kokkos 3.4 accepts, i.e. CUDA 11.x).
+POLYMECH_CUDA_ROOT="${POLYMECH_CUDA_ROOT:-/usr/lib/nvidia-cuda-toolkit}"
+POLYMECH_CUDA_HOST_CXX="${POLYMECH_CUDA_HOST_CXX:-g++-11}"
+
+# Install the CUDA toolchain when missing and point every later nvcc / nvcc_wrapper / CMake lookup at it:
+# a newer toolkit (e.g. CUDA 12/13 in /usr/local/cuda) may sit earlier on PATH.
+setup_cuda_toolchain() {
+  if [ "$POLYMECH_CUDA_ROOT" = /usr/lib/nvidia-cuda-toolkit ]; then
+    private_apt_install "${CUDA_PACKAGES[@]}"
+  fi
+  [ -x "$POLYMECH_CUDA_ROOT/bin/nvcc" ] || die "no nvcc at $POLYMECH_CUDA_ROOT/bin/nvcc (set POLYMECH_CUDA_ROOT)"
+  command -v "$POLYMECH_CUDA_HOST_CXX" >/dev/null || die "host compiler '$POLYMECH_CUDA_HOST_CXX' not found"
+  local path_head="$POLYMECH_CUDA_ROOT/bin"
+  if [ "$POLYMECH_CUDA_ROOT" = /usr/lib/nvidia-cuda-toolkit ]; then
+    # Debian's nvcc finds ptxas, fatbinary, nvlink, cudafe++ ... on PATH (they live in /usr/bin), so a
+    # newer toolkit's bin earlier on PATH would hand CUDA 13 tools to CUDA 11.8 nvcc. A cache folder of
+    # links to exactly the package's tools goes first instead; nothing else on PATH is shadowed.
+    local tools="$POLYMECH_CACHE/cuda-debian-bin" t
+    if [ ! -f "$tools/.complete" ]; then
+      rm -rf "$tools" && mkdir -p "$tools"
+      for t in $(dpkg -L nvidia-cuda-toolkit | grep -E '^/usr/bin/[^/]+$'); do ln -s "$t" "$tools/"; done
+      touch "$tools/.complete"
+    fi
+    path_head="$POLYMECH_CUDA_ROOT/bin:$tools"
+  fi
+  export PATH="$path_head:$PATH"
+  export CUDA_ROOT="$POLYMECH_CUDA_ROOT"             # nvcc_wrapper runs $CUDA_ROOT/bin/nvcc
+  # CMake's FindCUDAToolkit (Kokkos' CUDA TPL) looks for include/cuda_runtime.h next to bin/nvcc: for
+  # Debian's split layout that is /usr (/usr/bin/nvcc, /usr/include, /usr/lib/x86_64-linux-gnu).
+  if [ "$POLYMECH_CUDA_ROOT" = /usr/lib/nvidia-cuda-toolkit ]; then
+    export CUDAToolkit_ROOT=/usr
+  else
+    export CUDAToolkit_ROOT="$POLYMECH_CUDA_ROOT"
+  fi
+  export NVCC_WRAPPER_DEFAULT_COMPILER="$POLYMECH_CUDA_HOST_CXX"
+  unset CUDA_HOME CUDA_PATH CUDACXX || true
+}
+
+# The CUDA Kokkos (Serial + CUDA, sm_80) the gate builds against; needs setup_cuda_toolchain first.
+cuda_kokkos_root() {
+  local src
+  src="$(kokkos_source_dir)"
+  build_kokkos "kokkos-$KOKKOS_VERSION_WANTED-cuda" -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
+    -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ARCH_AMPERE80=ON \
+    -DCUDAToolkit_ROOT="$CUDAToolkit_ROOT"
+}

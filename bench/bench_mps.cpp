@@ -1,0 +1,65 @@
+// MPS elastic force kernels (seed 000 eqs. (4), (5), (11), (12)): pair interactions per second for the
+// volumetric-strain pass plus the acceleration pass, with and without the rotation effect, in double
+// and float, and the whole time step in particles per second. Plate of the paper's material at
+// l0 = 50 um; N from 1e4 to 2e6 (the paper's size).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "mps_elastic/mps_elastic.hpp"
+
+namespace pm = polymech;
+namespace me = polymech::mps_elastic;
+
+namespace {
+
+me::Config plate(std::int64_t particles, bool rotation) {
+  me::Config c;
+  const double l0 = 5e-5;
+  const auto ny = static_cast<std::int64_t>(std::sqrt(2.0 * static_cast<double>(particles)));  // 1 : 2 plate
+  c.spacing = l0;
+  c.height = static_cast<double>(ny) * l0;
+  c.width = static_cast<double>(particles / ny) * l0;
+  c.dt = 2e-9;
+  c.excitation.kind = me::ExcitationKind::point;
+  if (rotation) c.effects = pm::EffectSet::resolve({"rotation"}, me::MpsElastic<double>::effects());
+  return c;
+}
+
+template <class T, bool Rotation>
+void BM_MpsForce(benchmark::State& state) {
+  me::MpsElastic<T> m(plate(state.range(0), Rotation));
+  for (int s = 0; s < 300; ++s) m.step();  // a wave in the plate, so nothing is trivially zero
+  for (auto _ : state) {
+    pm::mps::volumetric_strain<T, Rotation>(m.family(), m.fields(), m.params());
+    pm::mps::elastic_acceleration<T, Rotation>(m.family(), m.fields(), m.params());
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * m.bonds());  // pair interactions (full list)
+  state.counters["particles"] = m.particles();
+  state.counters["pairs_per_particle"] = static_cast<double>(m.bonds()) / m.particles();
+}
+
+template <class T, bool Rotation>
+void BM_MpsStep(benchmark::State& state) {
+  me::MpsElastic<T> m(plate(state.range(0), Rotation));
+  for (int s = 0; s < 300; ++s) m.step();
+  for (auto _ : state) {
+    m.step();
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * m.particles());  // particle updates
+  state.counters["particles"] = m.particles();
+}
+
+}  // namespace
+
+#define POLYMECH_MPS_BENCH(fn, T, R, name)                                                         \
+  BENCHMARK(fn<T, R>)->Name(name)->Arg(10000)->Arg(100000)->Arg(1000000)->Arg(2000000)->UseRealTime() \
+      ->Unit(benchmark::kMillisecond)
+
+POLYMECH_MPS_BENCH(BM_MpsForce, double, true, "MpsForce/double/rotation");
+POLYMECH_MPS_BENCH(BM_MpsForce, double, false, "MpsForce/double/no_rotation");
+POLYMECH_MPS_BENCH(BM_MpsForce, float, true, "MpsForce/float/rotation");
+POLYMECH_MPS_BENCH(BM_MpsStep, double, true, "MpsStep/double/rotation");
+POLYMECH_MPS_BENCH(BM_MpsStep, float, true, "MpsStep/float/rotation");
