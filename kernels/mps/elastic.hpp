@@ -54,6 +54,21 @@ KOKKOS_INLINE_FUNCTION Vec2<T> relative_displacement(const Vec2<T>& du, const Ve
   return Vec2<T>{{du[0] + one_minus_cos * r0[0] + sin_mean * r0[1], du[1] - sin_mean * r0[0] + one_minus_cos * r0[1]}};
 }
 
+// What a pair needs of one particle: reference position, displacement and, with rotation, the
+// precomputed sin(theta) and (1 - cos theta)/2. Loaded once per particle i, once per neighbour j.
+template <class T, bool Rotation>
+struct ParticleState {
+  Vec2<T> x0, u;
+  T sin_theta = T(0), half_omc = T(0);
+
+  KOKKOS_INLINE_FUNCTION ParticleState(const ElasticFields<T>& f, Index i) : x0(load<2>(f.x0, i)), u(load<2>(f.u, i)) {
+    if constexpr (Rotation) {
+      sin_theta = f.sin_theta(i);
+      half_omc = f.half_omc(i);
+    }
+  }
+};
+
 // Everything one pair (bond k = (i, j) of the family) needs, from the reference and current
 // configurations. One square root and one division per pair: 1/|r0| comes per bond from set-up and
 // w = re/r - 1 reuses 1/r.
@@ -65,18 +80,21 @@ struct ElasticPair {
   T inv_r0;      // 1 / |r0_ij|
   T w;           // w(|r_ij|), eq. (1)
 
-  KOKKOS_INLINE_FUNCTION ElasticPair(const ElasticFields<T>& f, Index i, Index j, Offset k, T re) {
-    const Vec2<T> r0 = load<2>(f.x0, j) - load<2>(f.x0, i);
-    const Vec2<T> du = load<2>(f.u, j) - load<2>(f.u, i);
+  KOKKOS_INLINE_FUNCTION ElasticPair(const ParticleState<T, Rotation>& pi, const ParticleState<T, Rotation>& pj,
+                                     T inv_r0_ij, T re)
+      : inv_r0(inv_r0_ij) {
+    const Vec2<T> r0 = pj.x0 - pi.x0;
+    const Vec2<T> du = pj.u - pi.u;
     r = r0 + du;
     inv_r = T(1) / kx::sqrt(norm2(r));
-    inv_r0 = f.inv_r0(k);
     w = re * inv_r > T(1) ? re * inv_r - T(1) : T(0);  // eq. (1) for r > 0
     if constexpr (Rotation)
-      uij = relative_displacement(du, r0, f.sin_theta(i), f.sin_theta(j), f.half_omc(i), f.half_omc(j));
+      uij = relative_displacement(du, r0, pi.sin_theta, pj.sin_theta, pi.half_omc, pj.half_omc);
     else
       uij = du;
   }
+  KOKKOS_INLINE_FUNCTION ElasticPair(const ElasticFields<T>& f, Index i, Index j, Offset k, T re)
+      : ElasticPair(ParticleState<T, Rotation>(f, i), ParticleState<T, Rotation>(f, j), f.inv_r0(k), re) {}
 };
 
 // 1/|r0_ij| for every bond of the reference family (set-up, once).
@@ -97,9 +115,10 @@ void volumetric_strain(const neighbors::BondFamily& family, const ElasticFields<
   Kokkos::parallel_for(
       Rotation ? "polymech::mps::volumetric_strain_with_rotation" : "polymech::mps::volumetric_strain",
       range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const ParticleState<T, Rotation> pi(f, i);
         T s = T(0);
         for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const ElasticPair<T, Rotation> q(f, i, family.neighbor(k), k, re);
+          const ElasticPair<T, Rotation> q(pi, ParticleState<T, Rotation>(f, family.neighbor(k)), f.inv_r0(k), re);
           s += dot(q.uij, q.r) * q.w * q.inv_r0 * q.inv_r;
         }
         f.e(i) = c * s;
@@ -121,13 +140,14 @@ void elastic_acceleration(const neighbors::BondFamily& family, const ElasticFiel
   Kokkos::parallel_for(
       Rotation ? "polymech::mps::elastic_acceleration_with_rotation" : "polymech::mps::elastic_acceleration",
       range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const ParticleState<T, Rotation> pi(f, i);
         const T ei = f.e(i);
         auto vol = Vec2<T>::zero();
         auto lap = Vec2<T>::zero();
         T moment = T(0);
         for (Offset k = family.begin(i); k < family.end(i); ++k) {
           const Index j = family.neighbor(k);
-          const ElasticPair<T, Rotation> q(f, i, j, k, re);
+          const ElasticPair<T, Rotation> q(pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
           vol += ((ei + f.e(j)) * q.w * q.inv_r0 * q.inv_r) * q.r;
           const Vec2<T> shear = (q.w * q.inv_r0 * q.inv_r0) * q.uij;
           lap += shear;

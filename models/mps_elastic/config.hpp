@@ -28,7 +28,7 @@ struct Excitation {
   double period = 5.0e-7;      // T [s] (2 MHz)
   double cycles = 1.0;         // eq. (22): 1; eqs. (23)-(24): 5
   double position = -1.0;      // point source: x1 of the source on the top surface; < 0: centre
-  double width = 0.0;          // point source: top-row particles within width/2 are driven; 0: one spacing
+  double width = 0.0;          // point source: driven width of the top row (cells inside it); 0: nearest particle(s)
 };
 
 struct Probe {

@@ -135,6 +135,8 @@ class MpsElastic {
   }
 
   double time() const { return static_cast<double>(step_) * cfg_.dt; }
+  // Time at which the prescribed excitation ends (0 without one); afterwards the system is free.
+  double excitation_end_time() const { return excitation_on_ ? pulse_.duration() : 0.0; }
   std::int64_t step_index() const { return step_; }
   Index particles() const { return n_; }
   Offset bonds() const { return family_.num_pairs; }
@@ -261,12 +263,23 @@ class MpsElastic {
     std::vector<Index> src;
     const std::int64_t top = lat.ny - 1;
     const double xs = ex.position < 0 ? 0.5 * cfg_.width : ex.position;
-    const double half = 0.5 * (ex.width > 0 ? ex.width : cfg_.spacing) * (1.0 + 1e-9);
-    for (std::int64_t i = 0; i < lat.nx; ++i) {
-      const Index id = lat.index(i, top);
-      if (ex.kind != ExcitationKind::point || std::abs(lat.x1(id) - xs) <= half) src.push_back(id);
+    if (ex.kind != ExcitationKind::point) {
+      for (std::int64_t i = 0; i < lat.nx; ++i) src.push_back(lat.index(i, top));
+    } else {
+      // The point source drives the top-row particles whose cells lie inside [xs - w/2, xs + w/2], so
+      // the driven width is the same physical width at every resolution (w a multiple of l0). When no
+      // cell fits (w = 0 or w < l0), the particle(s) nearest to xs (both, when xs is between two).
+      const double half = 0.5 * ex.width * (1.0 + 1e-9), l0 = cfg_.spacing;
+      double nearest = 1e300;
+      for (std::int64_t i = 0; i < lat.nx; ++i) {
+        const double d = std::abs(lat.x1(lat.index(i, top)) - xs);
+        if (d + 0.5 * l0 <= half) src.push_back(lat.index(i, top));
+        nearest = std::min(nearest, d);
+      }
+      if (src.empty())
+        for (std::int64_t i = 0; i < lat.nx; ++i)
+          if (std::abs(lat.x1(lat.index(i, top)) - xs) <= nearest + 1e-9 * l0) src.push_back(lat.index(i, top));
     }
-    if (src.empty()) throw std::invalid_argument("mps_elastic: the point source selects no particle of the top row");
     sources_ = View1<Index>("polymech::mps_elastic::sources", src.size());
     auto h = Kokkos::create_mirror_view(sources_);
     for (std::size_t k = 0; k < src.size(); ++k) h(k) = src[k];

@@ -1,0 +1,72 @@
+// What every app shares: the common command-line options, Kokkos set-up, and turning errors into
+// one clear message and a non-zero exit code (2: bad input, 1: a failure while running).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include "core/kokkos_shim.hpp"
+#include "io/output.hpp"
+#include "io/scene.hpp"
+
+namespace polymech::apps {
+
+struct CommonOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;
+  std::string accuracy;   // "" = the scene's default
+  std::string precision;  // "" = the scene's default
+  std::int64_t steps = -1;
+  int threads = -1;
+  bool quiet = false;
+};
+
+// --scene, --out, --accuracy, --precision, --steps, --threads, --quiet.
+inline void add_common_options(CLI::App& app, CommonOptions& o, const std::string& default_scene,
+                               const std::string& default_out) {
+  o.scene = default_scene;
+  o.out = default_out;
+  app.add_option("--scene", o.scene, "scene file (TOML)")->capture_default_str();
+  app.add_option("--out", o.out, "output folder (created if missing)")->capture_default_str();
+  app.add_option("--accuracy", o.accuracy, "accuracy preset (default: the scene's [accuracy].default)")
+      ->check(CLI::IsMember({"draft", "standard", "paper"}));
+  app.add_option("--precision", o.precision, "floating-point precision of the kernels (default: the scene's)")
+      ->check(CLI::IsMember({"double", "float"}));
+  app.add_option("--steps", o.steps, "number of time steps (default: the scene's, scaled to the accuracy)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--threads", o.threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--quiet", o.quiet, "no progress lines");
+}
+
+// Kokkos for the lifetime of an app.
+class KokkosSession {
+ public:
+  explicit KokkosSession(int threads) { kx::initialize(threads); }
+  ~KokkosSession() { Kokkos::finalize(); }
+  KokkosSession(const KokkosSession&) = delete;
+  KokkosSession& operator=(const KokkosSession&) = delete;
+};
+
+// Runs body(); scene and input errors print "error: <message>" and return 2, other failures 1.
+template <class Body>
+int guarded(const char* name, Body&& body) {
+  try {
+    return body();
+  } catch (const io::SceneError& e) {
+    std::fprintf(stderr, "%s: error: %s\n", name, e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "%s: error: %s\n", name, e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: failed: %s\n", name, e.what());
+    return 1;
+  }
+}
+
+}  // namespace polymech::apps

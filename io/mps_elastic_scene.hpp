@@ -1,0 +1,55 @@
+// Scene files of the MPS elastic-wave model (seed 000): scenes/mps/*.toml -> a validated
+// mps_elastic::Config at the chosen accuracy, plus what the app needs around the model (analysis
+// probes, output cadence). Every problem is a SceneError naming the file, line, key and what is allowed.
+//
+// Accuracy presets scale the resolution: the scene gives the paper's spacing l0 and dt; preset
+// `draft` multiplies both by [accuracy].draft (default 4), `standard` by [accuracy].standard
+// (default 2), `paper` by [accuracy].paper (default 1), and divides the step count by the same
+// factor, so every preset simulates the same physical time.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/scene.hpp"
+#include "mps_elastic/config.hpp"
+
+namespace polymech::io {
+
+inline const std::vector<std::string>& accuracy_presets() {
+  static const std::vector<std::string> names = {"draft", "standard", "paper"};
+  return names;
+}
+
+struct MpsElasticScene {
+  std::filesystem::path file;
+  std::string title;
+  mps_elastic::Config config;  // at the chosen accuracy
+  std::string accuracy;        // preset name
+  double coarsening = 1.0;     // spacing / the scene's spacing
+  std::string precision;       // "double" or "float"
+  double stable_dt = 0.0;      // stability limit of this resolution [s]
+  // Wave-speed measurement (optional): two probes on one ray from the source each.
+  std::vector<std::string> p_wave_probes;  // arrival of the divergence (P) field
+  std::vector<std::string> s_wave_probes;  // arrival of the rotation (S) field
+  std::int64_t snapshot_every = 0;         // steps between field snapshots (0: none)
+};
+
+struct MpsSceneOptions {
+  std::string accuracy;        // "" -> the scene's [accuracy].default
+  std::int64_t steps = -1;     // > 0 overrides the (scaled) step count
+  double coarsening = 0.0;     // > 0 overrides the preset's factor (accuracy-cost sweeps)
+  std::string precision;       // "" -> the scene's [model].precision
+};
+
+MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const MpsSceneOptions& options = {});
+
+// Source point of the excitation (top row, at the excitation's x1) in the model's coordinates.
+struct Point2 {
+  double x1 = 0.0, x3 = 0.0;
+};
+Point2 excitation_source_point(const mps_elastic::Config& c);
+
+}  // namespace polymech::io

@@ -1,0 +1,108 @@
+// Strict reading of scene files (TOML): every value is read through a SceneTable that checks its
+// type and range, remembers which keys the model knows, and reports unknown keys when the table is
+// finished. Every error is one SceneError whose message names the file, the line, the key and what
+// is allowed, e.g.
+//
+//   scenes/mps/point_source.toml:12:1: key 'domain.spacing' = -5e-05 is out of range: must be > 0
+//   scenes/mps/point_source.toml:14:1: unknown key 'domain.spacng'; allowed in [domain]: width, height, ...
+//
+// Host-only (toml++ does not compile under nvcc); models never see this header.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polymech::io {
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An interval for a number; text() says it in words for error messages ("> 0", "in [1, 10]").
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+
+  bool contains(double x) const;
+  std::string text() const;
+};
+Range positive();                      // > 0
+Range non_negative();                  // >= 0
+Range at_least(double lo);             // >= lo
+Range above(double lo);                // > lo
+Range between(double lo, double hi);   // [lo, hi]
+
+namespace detail {
+struct SceneDocument;
+}
+
+// One table of a scene (the root, [section], or one entry of [[array]]).
+class SceneTable {
+ public:
+  // Required and optional numbers; integers in the file are accepted as reals.
+  double real(const std::string& key, Range range) const;
+  double real(const std::string& key, double fallback, Range range) const;
+  std::int64_t integer(const std::string& key, std::int64_t lo, std::int64_t hi) const;
+  std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
+  bool boolean(const std::string& key, bool fallback) const;
+  std::string string(const std::string& key) const;
+  std::string string(const std::string& key, const std::string& fallback) const;
+  // A string from a fixed set; the error lists the set.
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed) const;
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed, const std::string& fallback) const;
+  std::vector<std::string> strings(const std::string& key, const std::vector<std::string>& fallback) const;
+  std::vector<double> reals(const std::string& key, Range range) const;
+
+  bool has(const std::string& key) const;
+  SceneTable table(const std::string& key) const;                    // required [key]
+  std::optional<SceneTable> optional_table(const std::string& key) const;
+  std::vector<SceneTable> tables(const std::string& key) const;      // [[key]], may be empty
+
+  // Fails on any key of this table that no accessor above asked for, listing the known ones.
+  void finish() const;
+
+  // Errors located at a key of this table (or at the table itself when the key is absent).
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  [[noreturn]] void fail_table(const std::string& message) const;
+
+  // "domain.spacing", "probes[2].x1": the key's full name, as errors print it.
+  std::string full_name(const std::string& key) const;
+  const std::filesystem::path& file() const;
+  std::string location(const std::string& key) const;  // "file:line:column"
+
+ private:
+  friend class Scene;
+  // table is a const toml::table*, kept opaque so toml++ stays inside scene.cpp
+  SceneTable(std::shared_ptr<const detail::SceneDocument> doc, const void* table, std::string path);
+  void known(const std::string& key) const { known_->insert(key); }
+
+  std::shared_ptr<const detail::SceneDocument> doc_;
+  const void* table_;
+  std::string path_;  // "" for the root
+  std::shared_ptr<std::set<std::string>> known_;
+};
+
+// A parsed scene file. Missing or unreadable files and TOML syntax errors are SceneErrors.
+class Scene {
+ public:
+  static Scene load(const std::filesystem::path& file);
+  SceneTable root() const;
+  const std::filesystem::path& file() const;
+
+ private:
+  std::shared_ptr<const detail::SceneDocument> doc_;
+};
+
+// "%.6g" of a number, the form error messages print values in.
+std::string format_number(double x);
+
+}  // namespace polymech::io

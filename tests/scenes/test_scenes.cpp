@@ -1,0 +1,204 @@
+// Scenes: every shipped scene loads, and every bad scene stops with one message naming the file, the
+// line, the key and what is allowed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <regex>
+
+#include "io/mps_elastic_scene.hpp"
+#include "io/scene.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+
+namespace {
+
+fs::path source_dir() {
+  const char* d = std::getenv("POLYMECH_SOURCE_DIR");
+  return d ? fs::path(d) : fs::path(".");
+}
+
+// A small valid MPS scene (coarse, fast to validate); tests edit one line of it.
+const char* kBase = R"(title = "test scene"
+[model]
+kind = "mps_elastic"
+effects = ["rotation"]
+
+[domain]
+width = 0.004
+height = 0.004
+spacing = 2.0e-4
+influence_radius = 2.1
+
+[material]
+density = 7850.0
+c13 = 121.1e9
+c55 = 80.8e9
+
+[time]
+dt = 8.0e-9
+steps = 100
+
+[excitation]
+kind = "point"
+
+[[probes]]
+name = "A"
+x1 = 0.002
+x3 = 0.002
+
+[accuracy]
+default = "paper"
+)";
+
+class TempScene {
+ public:
+  explicit TempScene(const std::string& text, const std::string& name = "scene.toml") {
+    dir_ = fs::temp_directory_path() / ("polymech_scene_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    path_ = dir_ / name;
+    std::ofstream(path_) << text;
+  }
+  ~TempScene() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path dir_, path_;
+};
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base scene";
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+// Loads `text` and returns the error message (empty if it loaded).
+std::string error_of(const std::string& text) {
+  TempScene t(text);
+  try {
+    io::load_mps_elastic_scene(t.path());
+  } catch (const io::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The message starts with "<file>:<line>:" and contains every fragment.
+void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
+  const std::string msg = error_of(text);
+  ASSERT_FALSE(msg.empty()) << "the scene loaded, expected an error";
+  EXPECT_TRUE(std::regex_search(msg, std::regex("scene\\.toml:" + std::to_string(line) + ":"))) << msg;
+  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+}
+
+}  // namespace
+
+TEST(Scenes, BaseSceneLoads) {
+  TempScene t(kBase);
+  const auto s = io::load_mps_elastic_scene(t.path());
+  EXPECT_EQ(s.accuracy, "paper");
+  EXPECT_DOUBLE_EQ(s.config.spacing, 2e-4);
+  EXPECT_TRUE(s.config.effects.has("rotation"));
+  EXPECT_EQ(s.config.probes.size(), 1u);
+  EXPECT_GT(s.stable_dt, s.config.dt);
+}
+
+TEST(Scenes, MissingFile) {
+  try {
+    io::load_mps_elastic_scene("/nonexistent/scene.toml");
+    FAIL() << "no error";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.toml: scene file not found"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Scenes, SyntaxError) { expect_error(replace(kBase, "width = 0.004", "width = = 0.004"), 7, {"TOML syntax error"}); }
+
+TEST(Scenes, UnknownKey) {
+  expect_error(replace(kBase, "spacing = 2.0e-4", "spacing = 2.0e-4\nspcing = 1.0"), 10,
+               {"unknown key 'domain.spcing'", "allowed in [domain]:", "spacing", "influence_radius"});
+  expect_error(replace(kBase, "[accuracy]", "[acuracy]"), 29, {"unknown key 'acuracy'", "allowed at the top level", "accuracy"});
+}
+
+TEST(Scenes, UnknownEffect) {
+  expect_error(replace(kBase, R"(effects = ["rotation"])", R"(effects = ["rotation", "gravity"])"), 4,
+               {"key 'model.effects'", "unknown effect 'gravity'", "allowed: rotation"});
+}
+
+TEST(Scenes, NegativeSpacing) {
+  expect_error(replace(kBase, "spacing = 2.0e-4", "spacing = -2.0e-4"), 9, {"key 'domain.spacing' = -0.0002", "must be > 0"});
+}
+
+TEST(Scenes, InfluenceRadiusBelowSpacing) {
+  expect_error(replace(kBase, "influence_radius = 2.1", "influence_radius = 0.8"), 10,
+               {"key 'domain.influence_radius' = 0.8", "must be > 1"});
+}
+
+TEST(Scenes, NonPositiveTimeStep) {
+  expect_error(replace(kBase, "dt = 8.0e-9", "dt = 0.0"), 18, {"key 'time.dt' = 0", "must be > 0"});
+  expect_error(replace(kBase, "dt = 8.0e-9", "dt = -1e-9"), 18, {"key 'time.dt'", "must be > 0"});
+}
+
+TEST(Scenes, ProbeOutsideTheDomain) {
+  expect_error(replace(kBase, "x3 = 0.002", "x3 = 0.005"), 27,
+               {"key 'probes[0].x3' = 0.005", "probe 'A' outside the domain", "0 <= x3 <= height = 0.004"});
+}
+
+TEST(Scenes, TimeStepAboveTheStabilityLimit) {
+  expect_error(replace(kBase, "dt = 8.0e-9", "dt = 4.0e-8"), 18,
+               {"key 'time.dt' = 4e-08", "above the stability limit", "allowed: 0 < dt <= 2.4"});
+}
+
+TEST(Scenes, WrongTypeMissingKeyAndBadChoice) {
+  expect_error(replace(kBase, "steps = 100", "steps = \"many\""), 19, {"key 'time.steps'", "must be an integer", "got a string"});
+  expect_error(replace(kBase, "steps = 100", "steps = 1.5"), 19, {"key 'time.steps'", "must be an integer"});
+  expect_error(replace(kBase, "c55 = 80.8e9\n", ""), 12, {"key 'material.c55' is missing", "required"});
+  expect_error(replace(kBase, R"(kind = "point")", R"(kind = "laser")"), 22,
+               {"key 'excitation.kind' = \"laser\"", R"(allowed: "none", "point", "plane_p", "plane_s")"});
+  expect_error(replace(kBase, "[time]\n", "[tim]\n"), 1, {"[time] is missing"});
+}
+
+TEST(Scenes, AccuracyPresetsScaleSpacingTimeStepAndSteps) {
+  TempScene t(kBase);
+  io::MpsSceneOptions o;
+  o.accuracy = "standard";  // x2
+  const auto s = io::load_mps_elastic_scene(t.path(), o);
+  EXPECT_DOUBLE_EQ(s.config.spacing, 4e-4);
+  EXPECT_DOUBLE_EQ(s.config.dt, 16e-9);
+  EXPECT_EQ(s.config.steps, 50);
+  o.accuracy = "exquisite";
+  try {
+    io::load_mps_elastic_scene(t.path(), o);
+    FAIL() << "no error";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("accuracy 'exquisite' is unknown; allowed: draft, standard, paper"), std::string::npos);
+  }
+}
+
+// Every scene shipped under scenes/ loads at its default accuracy.
+TEST(Scenes, EveryShippedSceneLoads) {
+  const std::map<std::string, std::function<void(const fs::path&)>> loaders = {
+      {"mps_elastic", [](const fs::path& p) { io::load_mps_elastic_scene(p); }},
+  };
+  int count = 0;
+  for (const auto& e : fs::recursive_directory_iterator(source_dir() / "scenes")) {
+    if (e.path().extension() != ".toml") continue;
+    SCOPED_TRACE(e.path().string());
+    const io::Scene scene = io::Scene::load(e.path());
+    const std::string kind = scene.root().table("model").string("kind");
+    auto it = loaders.find(kind);
+    ASSERT_NE(it, loaders.end()) << "no loader for model kind '" << kind << "' in this test";
+    EXPECT_NO_THROW(it->second(e.path()));
+    ++count;
+  }
+  EXPECT_GE(count, 1);
+}
