@@ -154,7 +154,9 @@ void elastic_acceleration(const neighbors::BondFamily& family, const ElasticFiel
           if constexpr (Rotation) moment += cross(q.r, shear);
         }
         store<2>(f.a, i, c_vol * vol + c_lap * lap);
-        if constexpr (Rotation) f.alpha(i) = c_rot * moment;
+        // plain if: nvcc forbids an extended lambda's first capture (c_rot) inside if constexpr; the
+        // branch is still compiled out when Rotation is false
+        if (Rotation) f.alpha(i) = c_rot * moment;
       });
 }
 
@@ -217,7 +219,7 @@ ElasticEnergy elastic_energy(const neighbors::BondFamily& family, const ElasticF
       "polymech::mps::kinetic_energy", range(family.num_particles),
       KOKKOS_LAMBDA(const Index i, T& s) {
         s += T(0.5) * m * (f.v(i, 0) * f.v(i, 0) + f.v(i, 1) * f.v(i, 1));
-        if constexpr (Rotation) s += T(0.5) * inertia * f.omega(i) * f.omega(i);
+        if (Rotation) s += T(0.5) * inertia * f.omega(i) * f.omega(i);  // not constexpr: see elastic_acceleration
       },
       kinetic);
   const T re = p.re;
