@@ -8,6 +8,8 @@
 // Writes <out>/mps_point_source.csv (rewritten after every run, so a long sweep can be watched);
 // tools/plot_accuracy_cost.py draws it. Powers of two keep the scene's 0.4 mm source exactly
 // 1, 2, 4, 8 cells wide, so the runs differ only in resolution.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,16 +28,27 @@ struct Run {
   std::string precision;
   double coarsening = 0, spacing = 0;
   std::int64_t particles = 0, steps = 0;
-  double wall = 0, cp = NAN, cs = NAN, cp_err = NAN, cs_err = NAN, wave_diff = NAN;
+  double wall = 0, cpu = 0, cp = NAN, cs = NAN, cp_err = NAN, cs_err = NAN, wave_diff = NAN;
   me::ProbeHistory history;
 };
+
+// CPU time of this process (all threads): on a shared machine, the single-thread CPU time of a run
+// is a far steadier cost measure than its wall time.
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
 
 template <class T>
 Run run_one(const pm::io::MpsElasticScene& scene, double duration) {
   me::Config c = scene.config;
   c.steps = static_cast<std::int64_t>(std::llround(duration / c.dt));
   me::MpsElastic<T> m(c);
+  const double cpu0 = cpu_seconds();
   const auto stats = me::run(m, c.steps);
+  const double cpu = cpu_seconds() - cpu0;
   if (!stats.finite) throw std::runtime_error("run at coarsening " + std::to_string(scene.coarsening) + " went unstable");
   Run r;
   r.precision = scene.precision;
@@ -44,6 +57,7 @@ Run run_one(const pm::io::MpsElasticScene& scene, double duration) {
   r.particles = m.particles();
   r.steps = c.steps;
   r.wall = stats.wall_seconds;
+  r.cpu = cpu;
   const auto src = pm::io::excitation_source_point(c);
   r.history = m.probes();
   const auto w = me::measure_wave_speeds(r.history, c, src.x1, src.x3, scene.p_wave_probes, scene.s_wave_probes);
@@ -107,13 +121,16 @@ int main(int argc, char** argv) {
     std::vector<Run> runs;
     const Run* ref = nullptr;
     auto write = [&] {
-      std::vector<std::vector<double>> cols(10);
+      std::vector<std::vector<double>> cols(12);
       std::vector<std::string> header = {"is_float", "coarsening", "spacing", "particles", "steps", "wall_seconds",
-                                         "cp_rel_error", "cs_rel_error", "waveform_difference", "pair_updates"};
+                                         "cpu_seconds", "threads", "cp_rel_error", "cs_rel_error",
+                                         "waveform_difference", "particle_steps"};
+      const double nthreads = pm::kx::concurrency<pm::ExecSpace>();
       for (const auto& r : runs) {
         const double v[] = {r.precision == "float" ? 1.0 : 0.0, r.coarsening, r.spacing, double(r.particles),
-                            double(r.steps), r.wall, r.cp_err, r.cs_err, r.wave_diff, double(r.particles) * r.steps};
-        for (int k = 0; k < 10; ++k) cols[k].push_back(v[k]);
+                            double(r.steps), r.wall, r.cpu, nthreads, r.cp_err, r.cs_err, r.wave_diff,
+                            double(r.particles) * double(r.steps)};
+        for (int k = 0; k < 12; ++k) cols[k].push_back(v[k]);
       }
       pm::io::write_csv(std::filesystem::path(out) / "mps_point_source.csv", header, cols);
     };
@@ -128,8 +145,8 @@ int main(int argc, char** argv) {
         ref = &runs.front();  // the finest double run (re-taken: the vector may have moved)
         runs.back().wave_diff = waveform_difference(runs.back().history, ref->history);
         const auto& r = runs.back();
-        std::fprintf(stderr, "[sweep]   %lld particles, %lld steps, %.1f s: cp error %.3f %%, cs error %.3f %%, waveform %.3g\n",
-                     static_cast<long long>(r.particles), static_cast<long long>(r.steps), r.wall, 100 * r.cp_err,
+        std::fprintf(stderr, "[sweep]   %lld particles, %lld steps, %.1f s wall, %.1f s CPU: cp error %.3f %%, cs error %.3f %%, waveform %.3g\n",
+                     static_cast<long long>(r.particles), static_cast<long long>(r.steps), r.wall, r.cpu, 100 * r.cp_err,
                      100 * r.cs_err, r.wave_diff);
         write();
       }

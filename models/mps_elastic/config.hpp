@@ -31,6 +31,26 @@ struct Excitation {
   double width = 0.0;          // point source: driven width of the top row (cells inside it); 0: nearest particle(s)
 };
 
+// A straight crack (seed 000 §4, Fig. 1, Fig. 6) and its contact parameters (eqs. (17)-(21), Table 2).
+enum class CrackMode {
+  none,     // no crack
+  cut,      // bonds crossing the crack are removed; the faces interact only through the contact effects
+  monitor,  // intact body: the force transmitted through the crack line is recorded (no bond removed),
+            // for the S-wave case's normal reaction (seed 000 §5.2.2)
+};
+
+struct CrackConfig {
+  CrackMode mode = CrackMode::none;
+  double x1 = 0.0, x3 = 0.0;  // centre [m]
+  double length = 0.0;        // [m]
+  double angle = 0.0;         // degrees from the x1 axis (counter-clockwise); 0: horizontal, S+ above
+  double k_prime = 0.1;       // eq. (19): kn = k' m / dt^2 (Table 1)
+  double mu_s = 0.74;         // static friction coefficient (Table 2)
+  double mu_d = 0.57;         // kinetic friction coefficient (Table 2)
+  double normal_reaction = 0.0;  // fixed |f'_n| per contact pair [N/m] (eq. (20); the slip model's preload)
+  double contact_radius = 1.0001;  // cut bonds up to this length (in spacings) become contact pairs
+};
+
 struct Probe {
   std::string name;
   double x1 = 0.0, x3 = 0.0;
@@ -58,6 +78,7 @@ struct Config {
   std::vector<Probe> probes;
   std::int64_t probe_every = 1;
   EffectSet effects;
+  CrackConfig crack;
 
   double re() const { return influence_radius * spacing; }
 };

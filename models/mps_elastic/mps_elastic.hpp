@@ -8,7 +8,9 @@
 //
 // Effects: `rotation` (relative displacement with particle rotation, eqs. (6)-(7), and the rotation
 // equation (12), (15)-(16)). Without it the model solves rho dv/dt = C13 grad div u + 2 C55 lap u
-// with no rotation correction: S waves then travel at sqrt(2) cs (shown in tests/stability).
+// with no rotation correction: S waves then travel at sqrt(2) cs (tests/mps/test_mps_wave_speeds.cpp).
+// `crack_contact.open_close` and `crack_contact.slip`: contact between the faces of Config::crack
+// (seed 000 §4, models/mps_elastic/crack.hpp).
 #pragma once
 
 #include <cmath>
@@ -21,7 +23,9 @@
 #include "mps/excitation.hpp"
 #include "mps/probes.hpp"
 #include "mps_elastic/config.hpp"
+#include "mps_elastic/crack.hpp"
 #include "mps_elastic/lattice.hpp"
+#include "mps_elastic/power_iteration.hpp"
 #include "neighbors/neighbor_search.hpp"
 
 namespace polymech::mps_elastic {
@@ -39,74 +43,16 @@ struct ProbeHistory {
   std::vector<std::vector<std::vector<double>>> values;
 };
 
+// Fractions of the crack's contact pairs in each state over time (seed 000 §4).
+struct ContactHistory {
+  std::vector<double> times, separation, stick, slip;
+};
+
 // Fields copied to the host for output, row-major N x 2 for vectors.
 struct HostFields {
   std::vector<double> x0, u, v, e, theta;
 };
 
-// Kernels of MpsElastic's power iteration (max_eigenvalue). Free functions rather than private
-// members: under CUDA an extended __host__ __device__ lambda (KOKKOS_LAMBDA) may not be defined in a
-// private or protected member function.
-namespace detail {
-
-// Deterministic pseudo-random start vector of amplitude eps (theta scaled by 1 / l0).
-template <class T>
-void power_iteration_start(const mps::ElasticFields<T>& f, Index n, bool rot, T eps, T l0) {
-  Kokkos::parallel_for(
-      "polymech::mps_elastic::power_iteration_start", range(n), KOKKOS_LAMBDA(const Index i) {
-        auto hash = [](std::uint32_t x) {
-          x ^= x >> 16;
-          x *= 0x7feb352dU;
-          x ^= x >> 15;
-          x *= 0x846ca68bU;
-          x ^= x >> 16;
-          return T(x) / T(4294967295.0) - T(0.5);
-        };
-        f.u(i, 0) = eps * hash(3u * static_cast<std::uint32_t>(i) + 1u);
-        f.u(i, 1) = eps * hash(3u * static_cast<std::uint32_t>(i) + 2u);
-        if (rot) f.theta(i) = eps / l0 * hash(3u * static_cast<std::uint32_t>(i) + 3u);
-      });
-}
-
-// <q, A q>_M / <q, q>_M with A q = -(a, alpha), particle mass m and moment of inertia `inertia`.
-template <class T>
-double power_iteration_rayleigh_quotient(const mps::ElasticFields<T>& f, Index n, bool rot, T m, T inertia) {
-  T num = T(0), den = T(0);
-  Kokkos::parallel_reduce(
-      "polymech::mps_elastic::power_iteration_rq", range(n),
-      KOKKOS_LAMBDA(const Index i, T& nn, T& dd) {
-        nn -= m * (f.u(i, 0) * f.a(i, 0) + f.u(i, 1) * f.a(i, 1));
-        dd += m * (f.u(i, 0) * f.u(i, 0) + f.u(i, 1) * f.u(i, 1));
-        if (rot) {
-          nn -= inertia * f.theta(i) * f.alpha(i);
-          dd += inertia * f.theta(i) * f.theta(i);
-        }
-      },
-      num, den);
-  return static_cast<double>(num) / static_cast<double>(den);
-}
-
-// q <- A q (u <- a, theta <- alpha), renormalised to M-norm amplitude eps per particle.
-template <class T>
-void power_iteration_step(const mps::ElasticFields<T>& f, Index n, bool rot, T m, T inertia, T eps) {
-  T norm = T(0);
-  Kokkos::parallel_reduce(
-      "polymech::mps_elastic::power_iteration_norm", range(n),
-      KOKKOS_LAMBDA(const Index i, T& s) {
-        s += m * (f.a(i, 0) * f.a(i, 0) + f.a(i, 1) * f.a(i, 1));
-        if (rot) s += inertia * f.alpha(i) * f.alpha(i);
-      },
-      norm);
-  const T scale = eps * kx::sqrt(m * static_cast<T>(n) / norm);
-  Kokkos::parallel_for(
-      "polymech::mps_elastic::power_iteration_step", range(n), KOKKOS_LAMBDA(const Index i) {
-        f.u(i, 0) = scale * f.a(i, 0);
-        f.u(i, 1) = scale * f.a(i, 1);
-        if (rot) f.theta(i) = scale * f.alpha(i);
-      });
-}
-
-}  // namespace detail
 
 template <class T>
 class MpsElastic {
@@ -119,6 +65,16 @@ class MpsElastic {
          {"polymech::mps::volumetric_strain_with_rotation", "polymech::mps::elastic_acceleration_with_rotation",
           "polymech::mps::rotation_update"},
          "5 reals per particle (theta, omega, alpha, sin theta, (1 - cos theta)/2)"},
+        {"crack_contact.open_close",
+         "crack faces open and close: penalty repulsion between S+ and S- pairs (seed 000 eqs. (17)-(19))",
+         {},
+         {"polymech::contact::crack_open_close", "polymech::contact::crack_apply_forces"},
+         "per crack pair: state (1 int) and force (2 reals)"},
+        {"crack_contact.slip",
+         "crack faces stick and slip: Coulomb friction with a fixed or contact normal force (seed 000 eqs. (20)-(21))",
+         {},
+         {"polymech::contact::crack_slip", "polymech::contact::crack_apply_forces"},
+         "per crack pair: state, force, anchor (2 reals), preload, slip sign; + normal force with open_close"},
     };
     return specs;
   }
@@ -157,16 +113,20 @@ class MpsElastic {
     // Reference-configuration family; r_e slightly enlarged so round-off never drops a pair whose
     // weight would be (nearly) zero anyway.
     family_ = neighbors::build_bond_family<T, 2>(f_.x0, params_.re * T(1 + 1e-6));
+    {
+      // n0 of the uncut body: the crack changes which particles interact, not the reference density
+      View1<T> n_i("polymech::mps_elastic::number_density", n_);
+      mps::number_density<T, 2>(family_, f_.x0, params_.re, n_i);
+      n0_ = c.number_density == NumberDensityReference::mean
+                ? static_cast<double>(mps::mean_number_density(n_i))
+                : mps::lattice_number_density(2, c.spacing, c.re());
+      if (c.n0_override > 0.0) n0_ = c.n0_override;
+      params_.n0 = static_cast<T>(n0_);
+    }
+    crack_ = CrackFaces<T>(c.crack, c.effects, f_.x0, family_, c.spacing, c.density * c.spacing * c.spacing, c.dt);
+    if (c.crack.mode == CrackMode::cut) family_ = crack_.cut(family_, f_.x0);  // seed 000 §4: no operator across
     f_.inv_r0 = View1<T>("polymech::mps_elastic::inv_r0", family_.num_pairs);
     mps::reference_bond_lengths(family_, f_);
-
-    View1<T> n_i("polymech::mps_elastic::number_density", n_);
-    mps::number_density<T, 2>(family_, f_.x0, params_.re, n_i);
-    n0_ = c.number_density == NumberDensityReference::mean
-              ? static_cast<double>(mps::mean_number_density(n_i))
-              : mps::lattice_number_density(2, c.spacing, c.re());
-    if (c.n0_override > 0.0) n0_ = c.n0_override;
-    params_.n0 = static_cast<T>(n0_);
 
     setup_excitation(lat);
     setup_probes(lat);
@@ -182,11 +142,14 @@ class MpsElastic {
       mps::volumetric_strain<T, true>(family_, f_, params_);
       if (sample_due()) sample();
       mps::elastic_acceleration<T, true>(family_, f_, params_);
+      crack_.template monitor<true>(f_, params_);
     } else {
       mps::volumetric_strain<T, false>(family_, f_, params_);
       if (sample_due()) sample();
       mps::elastic_acceleration<T, false>(family_, f_, params_);
+      crack_.template monitor<false>(f_, params_);
     }
+    crack_.add_contact_forces(f_);
     const T dt = static_cast<T>(cfg_.dt);
     mps::symplectic_euler(f_, dt);
     if (rotation_) mps::rotation_update(f_, dt);
@@ -213,6 +176,9 @@ class MpsElastic {
   const mps::ElasticFields<T>& fields() const { return f_; }
   const mps::ElasticParams<T>& params() const { return params_; }
   Index source_count() const { return static_cast<Index>(sources_.extent(0)); }
+  const CrackFaces<T>& crack() const { return crack_; }
+  // Fractions of crack pairs in separation / stick / slip at the probe samples (contact effects only).
+  const ContactHistory& contact_history() const { return contact_history_; }
 
   // Kinetic and strain energy now. The strain term uses e from the start of the last step.
   mps::ElasticEnergy energy() const {
@@ -268,6 +234,11 @@ class MpsElastic {
     patch.width = patch.height = 16 * c.spacing;
     patch.excitation.kind = ExcitationKind::none;
     patch.probes.clear();
+    // the elastic operator alone: the contact springs have their own bound (k' < 2, CrackFaces)
+    patch.crack = CrackConfig{};
+    patch.effects = EffectSet::resolve(c.effects.has("rotation") ? std::vector<std::string>{"rotation"}
+                                                                 : std::vector<std::string>{},
+                                       effects());
     patch.allow_unstable_dt = true;
     patch.n0_override = c.n0_override > 0.0 ? c.n0_override : reference_number_density(c);
     MpsElastic<double> m(patch);
@@ -412,6 +383,14 @@ class MpsElastic {
       mps::sample_probes<T, false>(stencil_, family_, f_, params_, record_, pending_);
     pending_times_.push_back(time());
     ++pending_;
+    if (crack_.contact()) {
+      const auto n = crack_.counts();
+      const double total = static_cast<double>(crack_.pair_count());
+      contact_history_.times.push_back(time());
+      contact_history_.separation.push_back(static_cast<double>(n.separation) / total);
+      contact_history_.stick.push_back(static_cast<double>(n.stick) / total);
+      contact_history_.slip.push_back(static_cast<double>(n.slip) / total);
+    }
   }
 
   void flush_probes() {
@@ -489,6 +468,9 @@ class MpsElastic {
   std::int64_t pending_ = 0;
   std::vector<double> pending_times_;
   ProbeHistory history_;
+  // crack
+  CrackFaces<T> crack_;
+  ContactHistory contact_history_;
 };
 
 }  // namespace polymech::mps_elastic
