@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "contact/crack_geometry.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 
 namespace polymech::io {
@@ -28,6 +29,35 @@ std::vector<std::string> probe_pair(const SceneTable& t, const std::string& key,
       t.fail(key, "names probe '" + n + "', which is not in [[probes]]; probes: " + names_of(probes));
   if (names[0] == names[1]) t.fail(key, "names the same probe twice");
   return names;
+}
+
+// Bonds the crack cuts and contact pairs it forms, counted on the lattice around the crack only.
+struct CrackCount {
+  std::int64_t cut = 0, pairs = 0;
+};
+CrackCount count_crack_bonds(const me::Config& c) {
+  const me::Lattice lat = me::make_lattice(c);
+  const auto seg = contact::CrackSegment::make(c.crack.x1, c.crack.x3, c.crack.length, c.crack.angle);
+  const double re = c.re(), l0 = c.spacing, reach = seg.half_length + re;
+  const auto m = static_cast<std::int64_t>(re / l0) + 1;
+  const double pair_r = c.crack.contact_radius * l0;
+  auto cell = [&](double x, std::int64_t n) { return std::clamp<std::int64_t>(static_cast<std::int64_t>(x / l0), 0, n - 1); };
+  CrackCount out;
+  for (std::int64_t j = cell(c.crack.x3 - reach, lat.ny); j <= cell(c.crack.x3 + reach, lat.ny); ++j)
+    for (std::int64_t i = cell(c.crack.x1 - reach, lat.nx); i <= cell(c.crack.x1 + reach, lat.nx); ++i) {
+      const double xa = (static_cast<double>(i) + 0.5) * l0, ya = (static_cast<double>(j) + 0.5) * l0;
+      if (!seg.upper(xa, ya)) continue;
+      for (std::int64_t b = -m; b <= m; ++b)
+        for (std::int64_t a = -m; a <= m; ++a) {
+          if (i + a < 0 || i + a >= lat.nx || j + b < 0 || j + b >= lat.ny) continue;
+          const double r = l0 * std::hypot(static_cast<double>(a), static_cast<double>(b));
+          if (r == 0.0 || r > re * (1 + 1e-6)) continue;
+          if (!seg.cuts(xa, ya, xa + static_cast<double>(a) * l0, ya + static_cast<double>(b) * l0)) continue;
+          ++out.cut;
+          if (r <= pair_r) ++out.pairs;
+        }
+    }
+  return out;
 }
 
 }  // namespace
@@ -137,6 +167,33 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     c.excitation.kind = me::ExcitationKind::none;
   }
 
+  // [crack]: a straight crack whose bonds are cut (seed 000 §4); contact by the crack_contact effects
+  if (auto cr = root.optional_table("crack")) {
+    auto& k = c.crack;
+    k.mode = me::CrackMode::cut;
+    k.x1 = cr->real("x1", between(0.0, c.width));
+    k.x3 = cr->real("x3", between(0.0, c.height));
+    k.length = cr->real("length", positive());
+    k.angle = cr->real("angle", 0.0, between(-180.0, 180.0));
+    k.k_prime = cr->real("k_prime", 0.1, Range{0.0, 2.0, true, true});
+    k.mu_s = cr->real("mu_s", 0.74, non_negative());
+    k.mu_d = cr->real("mu_d", 0.57, between(0.0, k.mu_s));
+    k.normal_reaction = cr->real("normal_reaction", 0.0, non_negative());
+    out.normal_reaction_ratio = cr->real("normal_reaction_ratio", 0.0, non_negative());
+    k.contact_radius = cr->real("contact_radius", 1.0001, between(1.0, 3.0));
+    if (k.length < c.spacing)
+      cr->fail("length", "= " + format_number(k.length) + " m is shorter than the spacing " + format_number(c.spacing) +
+                             " m at accuracy '" + preset + "': the crack would cut no bond; allowed: length >= spacing");
+    if (c.effects.has("crack_contact.slip") && !c.effects.has("crack_contact.open_close") &&
+        !(k.normal_reaction > 0) && !(out.normal_reaction_ratio > 0))
+      cr->fail("normal_reaction", "is needed by effect crack_contact.slip without crack_contact.open_close (nothing "
+                                  "else presses the faces together); give normal_reaction > 0 [N/m per pair] or "
+                                  "normal_reaction_ratio > 0");
+    cr->finish();
+  } else if (c.effects.has("crack_contact.open_close") || c.effects.has("crack_contact.slip")) {
+    model.fail("effects", "lists a crack_contact effect, but the scene has no [crack] table");
+  }
+
   // [[probes]]
   std::vector<SceneTable> probe_tables = root.tables("probes");
   for (const auto& p : probe_tables) {
@@ -160,6 +217,12 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   if (auto an = root.optional_table("analysis")) {
     out.p_wave_probes = probe_pair(*an, "p_wave_probes", c.probes);
     out.s_wave_probes = probe_pair(*an, "s_wave_probes", c.probes);
+    out.harmonics_probe = an->string("harmonics_probe", "");
+    out.harmonics_component = an->choice("harmonics_component", {"u1", "u3"}, "u3");
+    if (!out.harmonics_probe.empty() &&
+        std::none_of(c.probes.begin(), c.probes.end(), [&](const me::Probe& p) { return p.name == out.harmonics_probe; }))
+      an->fail("harmonics_probe", "names probe '" + out.harmonics_probe + "', which is not in [[probes]]; probes: " +
+                                      names_of(c.probes));
     an->finish();
   }
 
@@ -171,6 +234,17 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     o->finish();
   }
   root.finish();
+
+  // The crack must cut bonds, and with contact effects it must have contact pairs.
+  if (c.crack.mode != me::CrackMode::none) {
+    const auto n = count_crack_bonds(c);
+    if (n.cut == 0)
+      throw SceneError(file.string() + ": [crack] cuts no bond at spacing " + format_number(c.spacing) +
+                       " m (is it outside the plate, or shorter than the gap between particle rows?)");
+    if (n.pairs == 0 && (c.effects.has("crack_contact.open_close") || c.effects.has("crack_contact.slip")))
+      throw SceneError(file.string() + ": [crack] has no contact pair (no cut bond shorter than contact_radius = " +
+                       format_number(c.crack.contact_radius) + " spacings)");
+  }
 
   // The stability limit of this resolution (seed 000 eqs. (13)-(16) are explicit): refused before
   // anything is allocated at full size.

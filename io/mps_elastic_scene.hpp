@@ -35,6 +35,12 @@ struct MpsElasticScene {
   std::vector<std::string> p_wave_probes;  // arrival of the divergence (P) field
   std::vector<std::string> s_wave_probes;  // arrival of the rotation (S) field
   std::int64_t snapshot_every = 0;         // steps between field snapshots (0: none)
+  // Crack cases (seed 000 §5.2): the fixed normal reaction as a ratio of the largest shear force through
+  // the crack line in the same run without the crack (0.75 in the paper's S-wave case; 0: not used).
+  double normal_reaction_ratio = 0.0;
+  // Harmonic analysis: spectrum of this probe's field, harmonics of the drive frequency.
+  std::string harmonics_probe;      // "" = none
+  std::string harmonics_component;  // "u1" or "u3"
 };
 
 struct MpsSceneOptions {

@@ -118,7 +118,7 @@ class CrackFaces {
   }
 
   contact::CrackStateCounts counts() const {
-    return contact() ? contact::pair_state_counts(pairs_, state_) : contact::CrackStateCounts{};
+    return contact() ? contact::crack_state_counts(pairs_, state_) : contact::CrackStateCounts{};
   }
 
   // Reset the contact state to the initial one (closed crack: pairs in stick, anchors at rest).

@@ -1,0 +1,53 @@
+#include "analysis/spectrum.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+namespace polymech::analysis {
+
+Spectrum amplitude_spectrum(const std::vector<double>& samples, double dt, int pad) {
+  const std::size_t n = samples.size();
+  if (n < 2 || !(dt > 0)) throw std::invalid_argument("amplitude_spectrum: need >= 2 samples and dt > 0");
+  std::size_t nfft = 1;
+  while (nfft < n) nfft <<= 1;
+  nfft *= static_cast<std::size_t>(std::max(1, pad));
+  std::vector<double> in(nfft, 0.0);
+  std::copy(samples.begin(), samples.end(), in.begin());
+  std::vector<std::complex<double>> out(nfft / 2 + 1);
+  fftw_plan plan = fftw_plan_dft_r2c_1d(static_cast<int>(nfft), in.data(), reinterpret_cast<fftw_complex*>(out.data()),
+                                        FFTW_ESTIMATE);
+  if (!plan) throw std::runtime_error("amplitude_spectrum: FFTW could not make a plan");
+  fftw_execute(plan);
+  fftw_destroy_plan(plan);
+  Spectrum s;
+  s.frequency.resize(out.size());
+  s.amplitude.resize(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    s.frequency[k] = static_cast<double>(k) / (static_cast<double>(nfft) * dt);
+    s.amplitude[k] = 2.0 * std::abs(out[k]) / static_cast<double>(n);
+  }
+  return s;
+}
+
+std::vector<double> harmonic_amplitudes(const Spectrum& s, double f0, int count, double half_width) {
+  std::vector<double> a(static_cast<std::size_t>(count), 0.0);
+  for (int h = 1; h <= count; ++h) {
+    const double lo = (h - half_width) * f0, hi = (h + half_width) * f0;
+    for (std::size_t k = 0; k < s.frequency.size(); ++k)
+      if (s.frequency[k] >= lo && s.frequency[k] <= hi) a[h - 1] = std::max(a[h - 1], s.amplitude[k]);
+  }
+  return a;
+}
+
+std::vector<double> harmonic_ratios(const Spectrum& s, double f0, int count, double half_width) {
+  auto a = harmonic_amplitudes(s, f0, count, half_width);
+  const double a1 = a.empty() ? 0.0 : a[0];
+  for (auto& x : a) x = a1 > 0 ? x / a1 : 0.0;
+  return a;
+}
+
+}  // namespace polymech::analysis
