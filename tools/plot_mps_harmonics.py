@@ -36,6 +36,8 @@ def main():
     fig, ax = plt.subplots(figsize=(8, 3.6))
     ax.plot(th["time"] * 1e6, th[comp + "_intact"] / 1e-9, "b-", lw=1, label="no crack")
     ax.plot(th["time"] * 1e6, th[comp + "_crack"] / 1e-9, "r--", lw=1, label="crack")
+    ax.axvspan(s["window_start"] * 1e6, (s["window_start"] + 3 / f0) * 1e6, color="0.9", zorder=0,
+               label="steady window (harmonic ratios)")
     ax.set_xlabel("time [us]")
     ax.set_ylabel(f"{comp} at {s['probe']} [nm]")
     ax.set_title(title, fontsize=9)
@@ -50,14 +52,14 @@ def main():
     fmhz = sp["frequency"] / 1e6
     ax.semilogy(fmhz, np.maximum(sp["intact"], 1e-6), "b-", lw=1, label="no crack")
     ax.semilogy(fmhz, np.maximum(sp["crack"], 1e-6), "r--", lw=1, label="crack")
-    for n, (rc, ri) in enumerate(zip(s["ratios_crack"], s["ratios_intact"]), start=1):
+    for n, (rc, ri) in enumerate(zip(s["spectrum_ratios_crack"], s["spectrum_ratios_intact"]), start=1):
         ax.axvline(n * f0 / 1e6, color="gray", lw=0.5, ls=":")
         ax.annotate(f"{n}f: {rc:.2g} / {ri:.2g}", (n * f0 / 1e6, 1.5), fontsize=7, rotation=90, va="bottom", ha="right")
     ax.set_xlim(0, 6 * f0 / 1e6)
     ax.set_ylim(1e-5, 20)
     ax.set_xlabel("frequency [MHz]")
     ax.set_ylabel("amplitude / amplitude at f")
-    ax.set_title(title + "  (labels: A_n/A_1 crack / no crack)", fontsize=9)
+    ax.set_title(title + "  (labels: spectrum A_n/A_1, crack / no crack)", fontsize=9)
     ax.legend(loc="lower left")
     ax.grid(alpha=0.3, which="both")
     fig.tight_layout()

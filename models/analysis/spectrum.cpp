@@ -50,4 +50,42 @@ std::vector<double> harmonic_ratios(const Spectrum& s, double f0, int count, dou
   return a;
 }
 
+std::vector<double> burst_harmonic_amplitudes(const std::vector<double>& t, const std::vector<double>& x,
+                                              double t_start, double f0, double periods, int count) {
+  if (t.size() != x.size()) throw std::invalid_argument("burst_harmonic_amplitudes: t and x differ in length");
+  const double t_end = t_start + periods / f0;
+  std::vector<std::size_t> idx;
+  double mean = 0.0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t[k] >= t_start && t[k] < t_end) {
+      idx.push_back(k);
+      mean += x[k];
+    }
+  if (idx.size() < 8)
+    throw std::invalid_argument("burst_harmonic_amplitudes: the window [" + std::to_string(t_start) + ", " +
+                                std::to_string(t_end) + "] s holds fewer than 8 samples (record too short?)");
+  mean /= static_cast<double>(idx.size());
+  constexpr double two_pi = 6.283185307179586476925286766559;
+  std::vector<double> a(static_cast<std::size_t>(count));
+  for (int n = 1; n <= count; ++n) {
+    double c = 0.0, s = 0.0;
+    for (std::size_t k : idx) {
+      const double phase = two_pi * n * f0 * t[k];
+      c += (x[k] - mean) * std::cos(phase);
+      s += (x[k] - mean) * std::sin(phase);
+    }
+    a[static_cast<std::size_t>(n - 1)] = 2.0 * std::hypot(c, s) / static_cast<double>(idx.size());
+  }
+  return a;
+}
+
+double burst_steady_start(const std::vector<double>& t, const std::vector<double>& x, double f0) {
+  double peak = 0.0;
+  for (double v : x) peak = std::max(peak, std::abs(v));
+  if (!(peak > 0.0)) throw std::invalid_argument("burst_steady_start: the signal is zero");
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (std::abs(x[k]) >= 0.5 * peak) return t[k] - 0.25 / f0 + 1.0 / f0;
+  return t.back();
+}
+
 }  // namespace polymech::analysis

@@ -5,6 +5,8 @@
 // Host code over MpsElastic; spectra need polymech_analysis (FFTW).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,9 +31,23 @@ struct HarmonicsResult {
   HarmonicsRun intact, crack;
   double normal_reaction = 0.0;  // the slip model's fixed |f'_n| used in the cracked run
   double f0 = 0.0;               // drive frequency 1/T
+  // Harmonic ratios A_n / A_1 (n = 1..5) of the steady part of the transmitted burst, over 3 drive
+  // periods starting one period after its arrival; the same window for both runs.
+  double window_start = 0.0;
+  std::vector<double> ratios_intact, ratios_crack;
+  // Spectra of the whole records (Figs. 8, 10) and the ratios read off them (peak within +-10 % of n f0).
   analysis::Spectrum spectrum_intact, spectrum_crack;
-  std::vector<double> ratios_intact, ratios_crack;  // A_n / A_1, n = 1..5
+  std::vector<double> spectrum_ratios_intact, spectrum_ratios_crack;
 };
+
+// A_n / A_1 of a probe signal over the steady window starting at t_start.
+inline std::vector<double> burst_ratios(const std::vector<double>& t, const std::vector<double>& x, double t_start,
+                                        double f0) {
+  auto a = analysis::burst_harmonic_amplitudes(t, x, t_start, f0);
+  const double a1 = a[0];
+  for (auto& v : a) v = a1 > 0 ? v / a1 : 0.0;
+  return a;
+}
 
 // make_hooks(label, model) gives each run's hooks (progress, snapshots); label is "intact" or "crack".
 template <class T>
@@ -78,11 +94,42 @@ HarmonicsResult run_harmonics_case(const Config& c, const std::string& probe, in
 
   out.f0 = 1.0 / c.excitation.period;
   const double dt = c.dt * static_cast<double>(c.probe_every);
+  out.window_start = analysis::burst_steady_start(out.intact.times, out.intact.signal, out.f0);
+  out.ratios_intact = burst_ratios(out.intact.times, out.intact.signal, out.window_start, out.f0);
+  out.ratios_crack = burst_ratios(out.crack.times, out.crack.signal, out.window_start, out.f0);
   out.spectrum_intact = analysis::amplitude_spectrum(out.intact.signal, dt);
   out.spectrum_crack = analysis::amplitude_spectrum(out.crack.signal, dt);
-  out.ratios_intact = analysis::harmonic_ratios(out.spectrum_intact, out.f0);
-  out.ratios_crack = analysis::harmonic_ratios(out.spectrum_crack, out.f0);
+  out.spectrum_ratios_intact = analysis::harmonic_ratios(out.spectrum_intact, out.f0, 5, 0.1);
+  out.spectrum_ratios_crack = analysis::harmonic_ratios(out.spectrum_crack, out.f0, 5, 0.1);
   return out;
+}
+
+// Reduced-size versions of a crack scene (tests, sweeps): the plate cut down around the crack, which
+// is centred with `depth` of plate above it (to the driven top row) and `below` under it; probes keep
+// their offsets from the crack (those that fall outside are dropped).
+inline void crop_around_crack(Config& c, double width, double depth, double below) {
+  const double dx = 0.5 * width - c.crack.x1, dz = below - c.crack.x3;
+  c.width = width;
+  c.height = depth + below;
+  c.crack.x1 += dx;
+  c.crack.x3 += dz;
+  c.excitation.position += dx;
+  for (auto& p : c.probes) {
+    p.x1 += dx;
+    p.x3 += dz;
+  }
+  c.probes.erase(std::remove_if(c.probes.begin(), c.probes.end(),
+                                [&](const Probe& p) { return p.x1 < 0 || p.x1 > width || p.x3 < 0 || p.x3 > c.height; }),
+                 c.probes.end());
+}
+
+// Steps until the plane burst (P or S) from the top row has passed `probe`, with one period to spare.
+inline std::int64_t steps_until_burst_passes(const Config& c, const std::string& probe) {
+  const Probe& a = probe_named(c, probe);
+  const double speed = c.excitation.kind == ExcitationKind::plane_s ? std::sqrt(c.c55 / c.density)
+                                                                     : std::sqrt((c.c13 + 2 * c.c55) / c.density);
+  const double arrival = (c.height - a.x3) / speed;
+  return std::llround((arrival + (c.excitation.cycles + 1.0) * c.excitation.period) / c.dt);
 }
 
 }  // namespace polymech::mps_elastic
