@@ -1,0 +1,118 @@
+// Kernel results with 1 and with 2 OpenMP threads agree within round-off. ctest runs this binary
+// twice (OMP_NUM_THREADS=1, then 2): each run computes the same results (a neighbour list of a random
+// cloud, 200 MPS steps of a plate with a clapping and slipping crack, energies), the first writes them
+// to a file, the second reads that file and compares. Neighbour lists must be identical (fixed order
+// within rows); the MPS fields are per-particle gathers, but n0 (a mean, eq. (2)) is a parallel
+// reduction, so fields and energies agree to round-off.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <vector>
+
+#include "mps_elastic/mps_elastic.hpp"
+#include "neighbors/neighbor_search.hpp"
+
+namespace pm = polymech;
+namespace me = polymech::mps_elastic;
+
+namespace {
+
+struct Results {
+  std::vector<double> neighbors;  // the CSR list of a random cloud, as numbers
+  std::vector<double> fields;     // u, v, theta after the steps
+  std::vector<double> reductions; // energies, contact counts
+};
+
+Results compute() {
+  Results r;
+  {
+    const std::int64_t n = 4000;
+    pm::VecView<double, 3> x("x", n);
+    auto h = Kokkos::create_mirror_view(x);
+    std::mt19937 g(11);
+    std::uniform_real_distribution<double> u(0.0, 16.0);
+    for (std::int64_t i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) h(i, k) = u(g);
+    Kokkos::deep_copy(x, h);
+    pm::neighbors::NeighborSearch<double, 3> search;
+    pm::neighbors::NeighborList list;
+    search.build(x, 1.5, pm::neighbors::ListKind::full, list);
+    auto off = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.offsets);
+    auto nb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.neighbors);
+    for (std::int64_t i = 0; i <= n; ++i) r.neighbors.push_back(static_cast<double>(off(i)));
+    for (pm::Offset k = 0; k < list.num_pairs; ++k) r.neighbors.push_back(nb(k));
+  }
+  me::Config c;
+  c.width = 40e-4;
+  c.height = 50e-4;
+  c.spacing = 1e-4;
+  c.dt = 4e-9;
+  c.excitation.kind = me::ExcitationKind::plane_p;
+  c.excitation.cycles = 5;
+  c.crack.mode = me::CrackMode::cut;
+  c.crack.x1 = 20e-4;
+  c.crack.x3 = 25e-4;
+  c.crack.length = 10e-4;
+  c.crack.angle = 30.0;
+  c.probes.push_back({"A", 20e-4, 20e-4});
+  c.effects = pm::EffectSet::resolve({"rotation", "crack_contact.open_close", "crack_contact.slip"},
+                                     me::MpsElastic<double>::effects());
+  me::MpsElastic<double> m(c);
+  for (int s = 0; s < 200; ++s) m.step();
+  const auto h = m.host_fields();
+  r.fields = h.u;
+  r.fields.insert(r.fields.end(), h.v.begin(), h.v.end());
+  r.fields.insert(r.fields.end(), h.theta.begin(), h.theta.end());
+  const auto e = m.energy();
+  const auto n = m.crack().counts();
+  r.reductions = {e.kinetic, e.strain, double(n.separation), double(n.stick), double(n.slip)};
+  return r;
+}
+
+void write(const std::string& path, const Results& r) {
+  std::ofstream o(path, std::ios::binary);
+  for (const auto* v : {&r.neighbors, &r.fields, &r.reductions}) {
+    const std::uint64_t n = v->size();
+    o.write(reinterpret_cast<const char*>(&n), sizeof n);
+    o.write(reinterpret_cast<const char*>(v->data()), static_cast<std::streamsize>(n * sizeof(double)));
+  }
+}
+
+bool read(const std::string& path, Results& r) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  for (auto* v : {&r.neighbors, &r.fields, &r.reductions}) {
+    std::uint64_t n = 0;
+    in.read(reinterpret_cast<char*>(&n), sizeof n);
+    v->resize(n);
+    in.read(reinterpret_cast<char*>(v->data()), static_cast<std::streamsize>(n * sizeof(double)));
+  }
+  return static_cast<bool>(in);
+}
+
+}  // namespace
+
+TEST(ThreadAgreement, OneAndTwoThreadsGiveTheSameResults) {
+  const char* file = std::getenv("POLYMECH_AGREEMENT_FILE");
+  ASSERT_NE(file, nullptr) << "run through ctest (sets POLYMECH_AGREEMENT_FILE)";
+  const int threads = pm::kx::concurrency<pm::ExecSpace>();
+  const Results now = compute();
+  if (threads == 1) {
+    write(file, now);
+    return;
+  }
+  Results ref;
+  ASSERT_TRUE(read(file, ref)) << "no 1-thread results in " << file;
+  ASSERT_EQ(now.neighbors, ref.neighbors);  // identical lists, whatever the thread count
+  ASSERT_EQ(now.fields.size(), ref.fields.size());
+  double scale = 0;
+  for (double v : ref.fields) scale = std::max(scale, std::abs(v));
+  ASSERT_GT(scale, 0.0);
+  for (std::size_t k = 0; k < now.fields.size(); ++k)
+    ASSERT_NEAR(now.fields[k], ref.fields[k], 1e-12 * scale) << "field value " << k;
+  for (std::size_t k = 0; k < now.reductions.size(); ++k)
+    EXPECT_NEAR(now.reductions[k], ref.reductions[k], 1e-10 * std::abs(ref.reductions[k])) << "reduction " << k;
+}
