@@ -1,8 +1,10 @@
-// Progress of long runs on stderr: step, simulated time, steps/s and ETA, at most every `interval`
-// seconds of wall time (and once at the end), e.g.
+// Progress of long runs on stderr: step, simulated time, steps/s and ETA, and once at the end. Lines
+// come every `interval` seconds at first, then every 1/30 of the elapsed time (at most every minute),
+// so an hour-long run prints a readable log rather than thousands of lines, e.g.
 //   [mps_point_source] step 1200/10000 (12%)  t = 2.400e-06 s  845 steps/s  ETA 0:10
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -20,7 +22,9 @@ class Progress {
   void update(std::int64_t step) {
     if (!enabled_ || (step & 15) != 0) return;
     const auto now = clock::now();
-    if (std::chrono::duration<double>(now - last_).count() < interval_) return;
+    const double since = std::chrono::duration<double>(now - last_).count();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (since < std::min(60.0, std::max(interval_, elapsed / 30.0))) return;
     last_ = now;
     print(step, now, false);
   }
