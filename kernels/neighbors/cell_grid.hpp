@@ -75,20 +75,29 @@ void ensure_size(V& v, std::size_t n, const char* label) {
 template <class T, int D>
 void size_grid(CellGrid<T, D>& g, const detail::Bounds<T, D>& b, T radius, std::int64_t max_cells) {
   T h = radius > T(0) ? radius : T(1);
-  for (int attempt = 0; attempt < 64; ++attempt) {
+  bool sized = false;
+  for (int attempt = 0; attempt < 64 && !sized; ++attempt) {
     std::int64_t total = 1;
     bool fits = true;
-    for (int k = 0; k < D; ++k) {
+    for (int k = 0; k < D && fits; ++k) {
       const double extent = static_cast<double>(b.hi[k]) - static_cast<double>(b.lo[k]);
-      g.dims[k] = static_cast<std::int64_t>(extent / static_cast<double>(h)) + 1;
-      if (total > max_cells / g.dims[k]) fits = false;
-      total *= g.dims[k];
+      const double cells = extent / static_cast<double>(h) + 1.0;  // in double: no integer overflow
+      g.dims[k] = cells > static_cast<double>(max_cells) ? max_cells + 1 : static_cast<std::int64_t>(cells);
+      fits = total <= max_cells / g.dims[k];
+      if (fits) total *= g.dims[k];
     }
     if (fits && total <= max_cells) {
       g.num_cells = total;
-      break;
+      sized = true;
+    } else {
+      h *= T(1.5);
     }
-    h *= T(1.5);
+  }
+  if (!sized) {  // unreachable for finite coordinates (h grew by 1.5^64); one cell is always correct
+    for (int k = 0; k < D; ++k) g.dims[k] = 1;
+    g.num_cells = 1;
+    const double span = static_cast<double>(b.hi[0]) - static_cast<double>(b.lo[0]);
+    h = static_cast<T>(span > 0 ? span : 1.0);
   }
   g.cell_size = h;
   for (int k = 0; k < D; ++k) g.origin[k] = b.lo[k];
