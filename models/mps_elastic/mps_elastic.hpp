@@ -21,11 +21,11 @@
 
 #include "mps/elastic.hpp"
 #include "mps/excitation.hpp"
-#include "mps/probes.hpp"
 #include "mps_elastic/config.hpp"
 #include "mps_elastic/crack.hpp"
 #include "mps_elastic/lattice.hpp"
 #include "mps_elastic/power_iteration.hpp"
+#include "mps_elastic/probe_recorder.hpp"
 #include "neighbors/neighbor_search.hpp"
 
 namespace polymech::mps_elastic {
@@ -35,13 +35,6 @@ inline std::string format_g(double x) {
   std::snprintf(buf, sizeof buf, "%.4g", x);
   return buf;
 }
-
-// Probe time series on the host: values[p][f][s] for probe p, field f (mps::ProbeField), sample s.
-struct ProbeHistory {
-  std::vector<std::string> names;
-  std::vector<double> times;
-  std::vector<std::vector<std::vector<double>>> values;
-};
 
 // Fractions of the crack's contact pairs in each state over time (seed 000 §4).
 struct ContactHistory {
@@ -129,7 +122,7 @@ class MpsElastic {
     mps::reference_bond_lengths(family_, f_);
 
     setup_excitation(lat);
-    setup_probes(lat);
+    probes_ = ProbeRecorder<T>(cfg_, lat);
     if (!c.allow_unstable_dt && c.dt > stable_dt())
       throw std::invalid_argument("mps_elastic: dt = " + format_g(c.dt) + " s is above the stability limit " +
                                   format_g(stable_dt_) + " s of this resolution (spacing " + format_g(c.spacing) +
@@ -201,10 +194,7 @@ class MpsElastic {
   }
 
   // Probe time series so far (copies pending samples from the device).
-  const ProbeHistory& probes() {
-    flush_probes();
-    return history_;
-  }
+  const ProbeHistory& probes() { return probes_.history(); }
 
   HostFields host_fields() const {
     HostFields h;
@@ -321,68 +311,13 @@ class MpsElastic {
     Kokkos::deep_copy(sources_, h);
   }
 
-  // Shepard interpolation with the MPS weight over the particles within r_e of each probe.
-  void setup_probes(const Lattice& lat) {
-    const int np = static_cast<int>(cfg_.probes.size());
-    if (np == 0) return;
-    std::vector<Offset> off(1, 0);
-    std::vector<Index> ids;
-    std::vector<double> wts;
-    const double re = cfg_.re();
-    for (const auto& p : cfg_.probes) {
-      std::vector<std::pair<Index, double>> near;
-      const auto i0 = static_cast<std::int64_t>(std::floor(p.x1 / cfg_.spacing)) - 3;
-      const auto j0 = static_cast<std::int64_t>(std::floor(p.x3 / cfg_.spacing)) - 3;
-      for (std::int64_t j = std::max<std::int64_t>(0, j0); j < std::min(lat.ny, j0 + 7); ++j)
-        for (std::int64_t i = std::max<std::int64_t>(0, i0); i < std::min(lat.nx, i0 + 7); ++i) {
-          const Index id = lat.index(i, j);
-          const double r = std::hypot(lat.x1(id) - p.x1, lat.x3(id) - p.x3);
-          if (r < 1e-9 * cfg_.spacing) {
-            near.assign(1, {id, 1.0});
-            goto done;
-          }
-          if (r <= re) near.push_back({id, re / r - 1.0});
-        }
-    done:
-      if (near.empty())
-        throw std::invalid_argument("mps_elastic: probe '" + p.name + "' has no particle within r_e (outside the domain?)");
-      double sum = 0.0;
-      for (auto& q : near) sum += q.second;
-      for (auto& q : near) {
-        ids.push_back(q.first);
-        wts.push_back(q.second / sum);
-      }
-      off.push_back(static_cast<Offset>(ids.size()));
-      history_.names.push_back(p.name);
-    }
-    stencil_.offsets = Kokkos::View<Offset*, MemSpace>("polymech::mps_elastic::probe_offsets", off.size());
-    stencil_.particles = Kokkos::View<Index*, MemSpace>("polymech::mps_elastic::probe_particles", ids.size());
-    stencil_.weights = Kokkos::View<T*, MemSpace>("polymech::mps_elastic::probe_weights", wts.size());
-    auto ho = Kokkos::create_mirror_view(stencil_.offsets);
-    auto hi = Kokkos::create_mirror_view(stencil_.particles);
-    auto hw = Kokkos::create_mirror_view(stencil_.weights);
-    for (std::size_t k = 0; k < off.size(); ++k) ho(k) = off[k];
-    for (std::size_t k = 0; k < ids.size(); ++k) {
-      hi(k) = ids[k];
-      hw(k) = static_cast<T>(wts[k]);
-    }
-    Kokkos::deep_copy(stencil_.offsets, ho);
-    Kokkos::deep_copy(stencil_.particles, hi);
-    Kokkos::deep_copy(stencil_.weights, hw);
-    history_.values.assign(np, std::vector<std::vector<double>>(mps::probe_field_count));
-    record_ = View2<T>("polymech::mps_elastic::probe_record", record_capacity_, np * mps::probe_field_count);
-  }
-
-  bool sample_due() const { return stencil_.count() > 0 && step_ % cfg_.probe_every == 0; }
+  bool sample_due() const { return probes_.count() > 0 && step_ % cfg_.probe_every == 0; }
 
   void sample() {
-    if (pending_ == record_capacity_) flush_probes();
     if (rotation_)
-      mps::sample_probes<T, true>(stencil_, family_, f_, params_, record_, pending_);
+      probes_.template sample<true>(family_, f_, params_, time());
     else
-      mps::sample_probes<T, false>(stencil_, family_, f_, params_, record_, pending_);
-    pending_times_.push_back(time());
-    ++pending_;
+      probes_.template sample<false>(family_, f_, params_, time());
     if (crack_.contact()) {
       const auto n = crack_.counts();
       const double total = static_cast<double>(crack_.pair_count());
@@ -391,20 +326,6 @@ class MpsElastic {
       contact_history_.stick.push_back(static_cast<double>(n.stick) / total);
       contact_history_.slip.push_back(static_cast<double>(n.slip) / total);
     }
-  }
-
-  void flush_probes() {
-    if (pending_ == 0) return;
-    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), record_);
-    const int np = stencil_.count();
-    for (std::int64_t s = 0; s < pending_; ++s) {
-      history_.times.push_back(pending_times_[s]);
-      for (int p = 0; p < np; ++p)
-        for (int f = 0; f < mps::probe_field_count; ++f)
-          history_.values[p][f].push_back(static_cast<double>(h(s, p * mps::probe_field_count + f)));
-    }
-    pending_ = 0;
-    pending_times_.clear();
   }
 
   void compute_acceleration() {
@@ -461,13 +382,7 @@ class MpsElastic {
   bool excitation_on_ = false;
   mps::Pulse pulse_;
   View1<Index> sources_;
-  // probes
-  mps::ProbeStencil<T> stencil_;
-  View2<T> record_;
-  static constexpr std::int64_t record_capacity_ = 2048;
-  std::int64_t pending_ = 0;
-  std::vector<double> pending_times_;
-  ProbeHistory history_;
+  ProbeRecorder<T> probes_;
   // crack
   CrackFaces<T> crack_;
   ContactHistory contact_history_;
