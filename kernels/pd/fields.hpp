@@ -59,8 +59,10 @@ struct Fields {
   View1<T> horizon_weight;       // V_H,i: sum of the intact bond weights of i
   VecView<T, D> vv_state;        // t_i, the zero-energy force state of eq. (3) (the same for every bond of i)
   View1<T> viscous_work;         // work done on particle i by the velocity-viscosity forces [J]
+  VecView<T, D> vv_force;        // the velocity-viscosity force density of the last evaluation
   // hourglass effect; empty otherwise
   View1<T> hourglass_work;       // work done on particle i by the stabilisation forces [J]
+  VecView<T, D> hg_force;        // the hourglass force density of the last evaluation
   // boundary conditions (empty when nothing is constrained)
   Kokkos::View<std::uint8_t*, MemSpace> constraint;  // bits: prescribed velocity components
   VecView<T, D> prescribed_v;                         // prescribed velocity where constrained

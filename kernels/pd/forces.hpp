@@ -29,6 +29,13 @@ struct ForceParams {
   T work_dt = T(0);            // > 0: accumulate the work of the control forces over this step
 };
 
+// Work of a control force over one velocity-Verlet step, trapezoidal in time: the force f_n+1 found
+// at x_n+1 and the one of the previous evaluation f_n both act over the step's velocity v_n+1/2,
+//   W += dt/2 (f_n + f_n+1) . v_n+1/2 V_i,
+// which sums to dt f_n . v_n over a run (v_n = the full-step velocity), the pairing under which a
+// conservative force's work equals minus its potential change to second order; the rectangle rule
+// dt f_n+1 . v_n+1/2 drifts by -k v^2 dt^2 / 2 per step for a spring of stiffness k.
+
 namespace detail {
 template <bool Hourglass, bool Viscosity>
 constexpr const char* bond_forces_label() {
@@ -83,12 +90,16 @@ void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, con
         if (Hourglass) {
           const Vec<T, D> fs = hg_c * (T(2) * hg_y - load_mat<D>(f.F, i) * hg_xi - hg_fj);
           force += fs;
-          if (work_dt > T(0)) f.hourglass_work(i) += work_dt * f.volume(i) * dot(fs, load<D>(f.v, i));
+          if (work_dt > T(0))
+            f.hourglass_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fs + load<D>(f.hg_force, i), load<D>(f.v, i));
+          store<D>(f.hg_force, i, fs);
         }
         if (Viscosity) {
           const Vec<T, D> fv = wsum * load<D>(f.vv_state, i) - tj;
           force += fv;
-          if (work_dt > T(0)) f.viscous_work(i) += work_dt * f.volume(i) * dot(fv, load<D>(f.v, i));
+          if (work_dt > T(0))
+            f.viscous_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fv + load<D>(f.vv_force, i), load<D>(f.v, i));
+          store<D>(f.vv_force, i, fv);
         }
         store<D>(f.a, i, inv_rho * force);
       });

@@ -64,6 +64,10 @@ struct Damage {
   DamageCriterion criterion = DamageCriterion::critical_stretch;
   double critical_stretch = 0.0;       // s_c
   double energy_release_rate = 0.0;    // G_c [J/m^2] -> s_c (Silling & Askari 2005; see critical_stretch())
+  // A particle whose intact bonds leave an ill-conditioned shape tensor, det K / (tr K / D)^D below
+  // this (1 for a full or half-space family, 0 when the bonds lie in a plane), carries no stress:
+  // F would be undetermined along the missing directions.
+  double min_shape_quality = 0.2;
 };
 
 struct Stabilization {

@@ -29,6 +29,7 @@
 #include "nosb_pd/model_kernels.hpp"
 #include "nosb_pd/particles.hpp"
 #include "pd/deformation.hpp"
+#include "pd/diagnostics.hpp"
 #include "pd/energy.hpp"
 #include "pd/forces.hpp"
 #include "pd/integrate.hpp"
@@ -73,9 +74,9 @@ class NosbPd {
          {}, {}, "nothing (weights are evaluated per bond)"},
         {"velocity_viscosity", "zero-energy control by velocity viscosity (seed 003 eq. (3), c_v and omega_v)",
          {}, {"polymech::pd::velocity_viscosity_state"},
-         "2D+2 reals per particle (mean velocity, horizon volume, force state, work)"},
+         "3D+2 reals per particle (mean velocity, horizon volume, force state, force, work)"},
         {"hourglass", "zero-energy control by a stabilising force state (Silling 2017)", {},
-         {}, "1 real per particle (work)"},
+         {}, "D+1 reals per particle (force, work)"},
         {"damage", "bonds break above a critical stretch (or the one of a critical energy release rate)", {},
          {"polymech::pd::deformation_gradient_with_damage"}, "1 byte per bond, 1 real per particle"},
         {"contact", "rigid projectile (blunt cylinder or sphere) against the particles by penalty", {},
@@ -169,6 +170,13 @@ class NosbPd {
     return out;
   }
 
+  // How much of the bond deformation F does not see (zero-energy measure, pd/diagnostics.hpp), from
+  // the F of the last force evaluation; interior_only: particles with a complete family only.
+  pd::NonAffineMeasure nonaffine_deviation(bool interior_only = false) const {
+    const auto bonds = lattice_family(D, cfg_.spacing, cfg_.horizon_ratio, false, 1.0).bonds;
+    return pd::nonaffine_deviation(family_, f_, deformation_params_.weight, interior_only ? static_cast<Index>(bonds) : 0);
+  }
+
   // Broken bonds (full list: each counted from both ends) and the largest damage.
   std::int64_t broken_bonds() const {
     if (!damage_) return 0;
@@ -255,39 +263,40 @@ class NosbPd {
 
   // Largest stable step of velocity Verlet for this discretisation, from a patch of the same layout,
   // spacing, horizon, material, weights and hourglass force: 2 / omega with omega^2 the patch's largest
-  // eigenvalue plus the projectile penalty k / m, and the velocity viscosity's rate limit
-  // dt <= 1 / (2 c_v omega_v).
-  double stable_dt() {
-    if (stable_dt_ > 0) return stable_dt_;
-    Config patch = cfg_;
-    patch.effects = EffectSet::resolve(patch_effects(), effects());
+  // eigenvalue plus the projectile penalty k / m and the short-range springs, and the velocity
+  // viscosity's rate limit dt <= 1 / (2 c_v omega_v). Needs no model of the full size.
+  static double stable_time_step(const Config& c) {
+    Config patch = c;
+    std::vector<std::string> pe;
+    if (c.effects.has("weighted_function")) pe.push_back("weighted_function");
+    if (c.effects.has("hourglass")) pe.push_back("hourglass");
+    patch.effects = EffectSet::resolve(pe, effects());
     patch.geometry.shape = Shape::box;
     if (patch.geometry.layout == Layout::cylindrical) patch.geometry.layout = Layout::jittered;
-    const double side = (2.0 * std::ceil(cfg_.horizon_ratio) + 6.0) * cfg_.spacing;
+    const double side = (2.0 * std::ceil(c.horizon_ratio) + 2.0) * c.spacing;  // the fastest modes are local
     patch.geometry.length = patch.geometry.width = patch.geometry.height = side;
     patch.loading = Loading::none;
     patch.material.law = Law::elastic;
     patch.dt = 1.0;  // not used
     NosbPd<double, D> m(patch);
     double omega2 = m.max_eigenvalue();
-    if (contact_) {
-      const double vmin = cfg_.spacing * cfg_.spacing * (D == 3 ? cfg_.spacing : 1.0) * 0.25;  // smallest ring cell
-      omega2 += static_cast<double>(penalty_) / (cfg_.material.density * vmin);
-    }
-    stable_dt_ = 2.0 / std::sqrt(omega2);
-    if (viscosity_ && cfg_.stabilization.omega_v > 0)
-      stable_dt_ = std::min(stable_dt_, 1.0 / (2.0 * cfg_.stabilization.c_v * cfg_.stabilization.omega_v));
+    const double V = std::pow(c.spacing, D);
+    if (c.effects.has("contact"))  // a quarter of a lattice cell: the smallest particle of the layouts
+      omega2 += c.contact.penalty * c.material.youngs_modulus * c.spacing / (c.material.density * 0.25 * V);
+    if (c.effects.has("short_range"))  // up to 12 touching neighbours, each a spring c_s V / d_s
+      omega2 += 12.0 * c.contact.short_range_factor * m.micromodulus() * V /
+                (c.contact.short_range_distance * c.spacing * c.material.density);
+    double dt = 2.0 / std::sqrt(omega2);
+    if (c.effects.has("velocity_viscosity") && c.stabilization.omega_v > 0 && c.stabilization.c_v > 0)
+      dt = std::min(dt, 1.0 / (2.0 * c.stabilization.c_v * c.stabilization.omega_v));
+    return dt;
+  }
+  double stable_dt() {
+    if (stable_dt_ <= 0) stable_dt_ = stable_time_step(cfg_);
     return stable_dt_;
   }
 
  private:
-  std::vector<std::string> patch_effects() const {
-    std::vector<std::string> e;
-    if (weighted_) e.push_back("weighted_function");
-    if (hourglass_) e.push_back("hourglass");
-    return e;
-  }
-
   static void validate(const Config& c) {
     auto fail = [](const std::string& m) { throw std::invalid_argument("nosb_pd: " + m); };
     if (c.dimension != D) fail("dimension " + std::to_string(c.dimension) + " does not match the model's " + std::to_string(D));
@@ -343,6 +352,7 @@ class NosbPd {
     deformation_params_.weight = w;
     deformation_params_.damage = damage_;
     deformation_params_.critical_stretch = static_cast<T>(critical_stretch_);
+    if (damage_) deformation_params_.min_shape_quality = static_cast<T>(c.damage.min_shape_quality);
     deformation_params_.rate = plastic_;
     deformation_params_.mean_velocity = viscosity_;
     force_params_.weight = w;
@@ -402,8 +412,12 @@ class NosbPd {
       f_.horizon_weight = View1<T>(pre + "velocity_viscosity_horizon_weight", n);
       f_.vv_state = VecView<T, D>(pre + "velocity_viscosity_state", n);
       f_.viscous_work = View1<T>(pre + "velocity_viscosity_work", n);
+      f_.vv_force = VecView<T, D>(pre + "velocity_viscosity_force", n);
     }
-    if (hourglass_) f_.hourglass_work = View1<T>(pre + "hourglass_work", n);
+    if (hourglass_) {
+      f_.hourglass_work = View1<T>(pre + "hourglass_work", n);
+      f_.hg_force = VecView<T, D>(pre + "hourglass_force", n);
+    }
     if (contact_) contact_force_ = VecView<T, D>(pre + "contact_force", n);
     if (short_range_) {
       positions_ = VecView<T, D>(pre + "short_range_positions", n);
