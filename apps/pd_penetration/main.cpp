@@ -11,7 +11,6 @@
 #include "io/nosb_pd_scene.hpp"
 #include "io/progress.hpp"
 #include "nosb_pd/impact.hpp"
-#include "nosb_pd/run.hpp"
 
 namespace pm = polymech;
 namespace np = polymech::nosb_pd;
@@ -52,13 +51,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   hooks.sample_every = scene.sample_every;
   hooks.snapshot_every = scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0;
   hooks.snapshot = snapshot;
-  int free_samples = 0;
-  if (scene.stop_after_perforation)
-    hooks.stop = [&] {
-      free_samples = np::projectile_free(model) ? free_samples + 1 : 0;
-      return free_samples >= 5;  // five samples in a row without contact, through the plate
-    };
-  const np::RunStats stats = np::run(model, steps, hooks);
+  const np::RunStats stats = np::run_impact(model, steps, hooks, scene.stop_after_perforation);
   progress.done(stats.steps);
   if (!stats.finite) throw std::runtime_error("the run became unstable (NaN/Inf) before step " + std::to_string(stats.steps));
   const np::ImpactState impact = np::analyse_impact(model);

@@ -78,23 +78,37 @@ KOKKOS_INLINE_FUNCTION T jc_flow_stress(const JohnsonCook<T>& jc, T eps, T rate_
 // Radial return of J2 with Johnson-Cook hardening: the plastic increment d >= 0 with
 //   g(d) = seq_trial - 3 mu d - sigma_y(eps + d, d / (dt rate0), temperature) = 0,
 // where the rate is the plastic strain rate of this step (viscoplastic consistency). g decreases in
-// d; safeguarded Newton (bisection whenever a step leaves the bracket), derivative by a one-sided
-// difference. Returns 0 when the trial state is elastic.
+// d; Newton with the analytic slope, safeguarded by bisection whenever a step leaves the bracket,
+// to a relative residual of sqrt(machine epsilon) / 100. Returns 0 when the trial state is elastic.
 template <class T>
 KOKKOS_INLINE_FUNCTION T jc_return(const JohnsonCook<T>& jc, T mu, T seq_trial, T eps, T temperature, T dt) {
   const T inv_rate = T(1) / (dt * jc.rate0);
-  auto g = [&](T d) { return seq_trial - T(3) * mu * d - jc_flow_stress(jc, eps + d, d * inv_rate, temperature); };
-  if (g(T(0)) <= T(0)) return T(0);
-  T lo = T(0), hi = seq_trial / (T(3) * mu);  // g(hi) = -sigma_y < 0
-  T d = T(0.5) * hi;
+  T therm = T(1);
+  if (jc.thermal()) {
+    const T ts = kx::clamp((temperature - jc.T_room) / (jc.T_melt - jc.T_room), T(0), T(1));
+    therm = ts > T(0) ? T(1) - kx::exp(jc.m * kx::log(ts)) : T(1);
+  }
+  // g and its slope at d
+  auto eval = [&](T d, T& slope) {
+    const T e = eps + d;
+    const T pw = e > T(0) ? kx::exp(jc.n * kx::log(e)) : T(0);
+    const T H = jc.A + jc.B * pw, dH = e > T(0) ? jc.B * jc.n * pw / e : T(0);
+    const T x = d * inv_rate;
+    const T R = x > T(1) ? T(1) + jc.C * kx::log(x) : T(1), dR = x > T(1) ? jc.C / d : T(0);
+    slope = -T(3) * mu - (dH * R + H * dR) * therm;
+    return seq_trial - T(3) * mu * d - H * R * therm;
+  };
+  T slope;
+  if (eval(T(0), slope) <= T(0)) return T(0);
   constexpr T eps_T = std::numeric_limits<T>::epsilon();
-  const T tol = T(64) * eps_T * seq_trial;
-  for (int it = 0; it < 60; ++it) {
-    const T gd = g(d);
+  const T tol = T(0.01) * kx::sqrt(eps_T) * seq_trial;
+  T lo = T(0), hi = seq_trial / (T(3) * mu);  // g(hi) = -sigma_y < 0
+  T d = (seq_trial - jc_flow_stress(jc, eps, T(0), temperature)) / (T(3) * mu);  // perfectly plastic guess
+  d = d > lo && d < hi ? d : T(0.5) * hi;
+  for (int it = 0; it < 50; ++it) {
+    const T gd = eval(d, slope);
     if (kx::fabs(gd) <= tol) break;
     if (gd > T(0)) lo = d; else hi = d;
-    const T h = kx::max(T(1e-6) * d, T(1e-12) * hi + T(1e-30));
-    const T slope = (g(d + h) - gd) / h;
     T next = slope < T(0) ? d - gd / slope : T(0.5) * (lo + hi);
     if (!(next > lo && next < hi)) next = T(0.5) * (lo + hi);
     if (hi - lo <= T(4) * eps_T * hi) break;

@@ -21,8 +21,7 @@ struct NonAffineMeasure {
 
 // Kernel "polymech::pd::nonaffine_deviation" (intact bonds; F from the last deformation pass).
 template <class T, int D>
-NonAffineMeasure nonaffine_deviation(const neighbors::BondFamily& family, const Fields<T, D>& f, const BondWeight<T>& weight,
-                                     Index min_bonds = 0) {
+NonAffineMeasure nonaffine_deviation(const neighbors::BondFamily& family, const Fields<T, D>& f, Index min_bonds = 0) {
   const bool damage = f.bond_intact.extent(0) > 0;
   const auto s = ordered_sum<2>(
       "polymech::pd::nonaffine_deviation", family.num_particles, KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
@@ -33,7 +32,7 @@ NonAffineMeasure nonaffine_deviation(const neighbors::BondFamily& family, const 
           if (damage && !f.bond_intact(k)) continue;
           const Index j = family.neighbor(k);
           const Vec<T, D> xi = load<D>(f.x0, j) - xi0, eta = load<D>(f.u, j) - ui;
-          const T w = weight(f.volume(j), norm2(xi));
+          const T w = f.bond_weight(k);
           // Y - F xi = eta - (F - I) xi
           const Vec<T, D> z = eta - (Fi * xi - xi);
           acc[0] += double(w * norm2(z));

@@ -25,7 +25,8 @@ using SymView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
 
 // Particle status flags (bits of Fields::status).
 enum StatusBits : std::uint8_t {
-  status_failed = 1,  // too few intact bonds for an invertible shape tensor: carries no stress
+  status_failed = 1,       // too few intact bonds for an invertible shape tensor: carries no stress
+  status_shape_known = 2,  // kinv holds K^-1 of the current intact family
 };
 
 // Constraint bits (Fields::constraint): bit k set = velocity component k is prescribed.
@@ -52,8 +53,9 @@ struct Fields {
   View1<T> eps_p;       // equivalent plastic strain
   View1<T> temperature;  // adiabatic temperature (thermal softening)
   View1<T> plastic_work;  // accumulated plastic work per reference volume [J/m^3]
-  // per bond, aligned with family.neighbors (damage effect only)
-  Kokkos::View<std::uint8_t*, MemSpace> bond_intact;
+  // per bond, aligned with family.neighbors
+  View1<T> bond_weight;                               // W_ij (V_ij or W'_ij of eq. (2)), from the reference configuration
+  Kokkos::View<std::uint8_t*, MemSpace> bond_intact;  // damage effect only
   // velocity_viscosity effect (eq. (3)); empty otherwise
   VecView<T, D> vbar;            // weighted mean velocity over the intact family
   View1<T> horizon_weight;       // V_H,i: sum of the intact bond weights of i
@@ -83,6 +85,22 @@ struct BondWeight {
     return s > T(0) ? beta * volume_j * s : T(0);
   }
 };
+
+// Kernel "polymech::pd::bond_weights": W_ij of every bond of the family, once (they depend on the
+// reference configuration only; stored, the bond passes stream them instead of recomputing them).
+template <class T, int D>
+void bond_weights(const neighbors::BondFamily& family, const VecView<T, D>& x0, const View1<T>& volume,
+                  const BondWeight<T>& weight, const View1<T>& out) {
+  Kokkos::parallel_for(
+      "polymech::pd::bond_weights", range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        for (Offset k = family.begin(i); k < family.end(i); ++k) {
+          const Index j = family.neighbor(k);
+          T xi2 = T(0);
+          for (int d = 0; d < D; ++d) xi2 += (x0(j, d) - x0(i, d)) * (x0(j, d) - x0(i, d));
+          out(k) = weight(volume(j), xi2);
+        }
+      });
+}
 
 // Matrices in row-major Views with trailing extent D*D.
 template <int D, class ViewT>

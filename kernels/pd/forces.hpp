@@ -22,7 +22,6 @@ namespace polymech::pd {
 
 template <class T>
 struct ForceParams {
-  BondWeight<T> weight;
   T density = T(1);
   bool damage = false;         // skip broken bonds
   T hourglass_c = T(0);        // G_s c (hourglass effect)
@@ -49,7 +48,6 @@ constexpr const char* bond_forces_label() {
 // Writes a_i = L_i / rho (external forces are added afterwards).
 template <class T, int D, bool Hourglass, bool Viscosity>
 void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, const ForceParams<T>& p) {
-  const auto weight = p.weight;
   const bool damage = p.damage;
   const T inv_rho = T(1) / p.density, hg_c = p.hourglass_c, work_dt = p.work_dt;
   Kokkos::parallel_for(
@@ -71,12 +69,11 @@ void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, con
           if (damage && !f.bond_intact(k)) continue;
           const Index j = family.neighbor(k);
           const Vec<T, D> xi = load<D>(f.x0, j) - xi0;
-          const T xi2 = norm2(xi);
-          const T w = weight(f.volume(j), xi2);
+          const T w = f.bond_weight(k);
           wxi += w * xi;
           fj += w * (load_mat<D>(f.A, j) * xi);
           if (Hourglass) {
-            const T wl = w / kx::sqrt(xi2);
+            const T wl = w / kx::sqrt(norm2(xi));
             hg_y += wl * (xi + (load<D>(f.u, j) - ui));
             hg_xi += wl * xi;
             hg_fj += wl * (load_mat<D>(f.F, j) * xi);

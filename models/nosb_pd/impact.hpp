@@ -12,7 +12,7 @@
 #include <cmath>
 #include <vector>
 
-#include "nosb_pd/nosb_pd.hpp"
+#include "nosb_pd/run.hpp"
 
 namespace polymech::nosb_pd {
 
@@ -60,6 +60,19 @@ ImpactState analyse_impact(const NosbPd<T, D>& m) {
   s.rim_damage = nrim ? rim / nrim : 0.0;
   s.plug_mass_nominal = D == 3 ? rho * 3.14159265358979323846 * Rp * Rp * c.geometry.thickness : rho * 2 * Rp * c.geometry.thickness;
   return s;
+}
+
+// Runs an impact up to `steps` steps; with stop_after_perforation, ends once the projectile has been
+// through and free for five samples in a row (the residual velocity no longer changes).
+template <class T, int D>
+RunStats run_impact(NosbPd<T, D>& m, std::int64_t steps, RunHooks hooks, bool stop_after_perforation = true) {
+  int free_samples = 0;
+  if (stop_after_perforation)
+    hooks.stop = [&] {
+      free_samples = projectile_free(m) ? free_samples + 1 : 0;
+      return free_samples >= 5;
+    };
+  return run(m, steps, hooks);
 }
 
 }  // namespace polymech::nosb_pd

@@ -174,7 +174,7 @@ class NosbPd {
   // the F of the last force evaluation; interior_only: particles with a complete family only.
   pd::NonAffineMeasure nonaffine_deviation(bool interior_only = false) const {
     const auto bonds = lattice_family(D, cfg_.spacing, cfg_.horizon_ratio, false, 1.0).bonds;
-    return pd::nonaffine_deviation(family_, f_, deformation_params_.weight, interior_only ? static_cast<Index>(bonds) : 0);
+    return pd::nonaffine_deviation(family_, f_, interior_only ? static_cast<Index>(bonds) : 0);
   }
 
   // Broken bonds (full list: each counted from both ends) and the largest damage.
@@ -349,13 +349,12 @@ class NosbPd {
     w.delta2 = static_cast<T>(delta * delta);
     w.beta = static_cast<T>(beta_);
     w.weighted = weighted_;
-    deformation_params_.weight = w;
+    weight_ = w;
     deformation_params_.damage = damage_;
     deformation_params_.critical_stretch = static_cast<T>(critical_stretch_);
     if (damage_) deformation_params_.min_shape_quality = static_cast<T>(c.damage.min_shape_quality);
     deformation_params_.rate = plastic_;
     deformation_params_.mean_velocity = viscosity_;
-    force_params_.weight = w;
     force_params_.density = static_cast<T>(m.density);
     force_params_.damage = damage_;
     force_params_.hourglass_c = static_cast<T>(hourglass_ ? c.stabilization.hourglass * micromodulus_ : 0.0);
@@ -402,6 +401,8 @@ class NosbPd {
     // Reference family (seed 003 §3(1): the particles within the horizon delta of x_i), slightly
     // enlarged so that round-off never drops a lattice bond at exactly delta.
     family_ = neighbors::build_bond_family<T, D>(f_.x0, static_cast<T>(cfg_.horizon() * (1 + 1e-6)));
+    f_.bond_weight = View1<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, pre + "bond_weight"), static_cast<std::size_t>(family_.num_pairs));
+    pd::bond_weights(family_, f_.x0, f_.volume, weight_, f_.bond_weight);
     if (damage_) {
       f_.bond_intact = Kokkos::View<std::uint8_t*, MemSpace>(pre + "damage_bond_intact", static_cast<std::size_t>(family_.num_pairs));
       Kokkos::deep_copy(f_.bond_intact, std::uint8_t(1));
@@ -500,6 +501,7 @@ class NosbPd {
   neighbors::BondFamily family_;
   pd::ElasticConstants<T> elastic_;
   pd::JohnsonCook<T> jc_;
+  pd::BondWeight<T> weight_;
   pd::DeformationParams<T> deformation_params_;
   pd::ForceParams<T> force_params_;
   pd::ViscosityParams<T> viscosity_params_;
