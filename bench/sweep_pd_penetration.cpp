@@ -2,7 +2,7 @@
 // resolutions (spacing factors relative to the scene's paper spacing), precisions, horizon ratios,
 // velocity-viscosity coefficients c_v and impact velocities; for each run the residual velocity, its
 // error against the experiment (200.6 m/s at 303.5 m/s, Borvik et al.), the plate's damage, the
-// energy error and the wall time.
+// energy error and the wall time. A diverged run (no zero-energy control) has NaN residual velocity.
 //
 //   sweep_pd_penetration [--scene scenes/pd/penetration_303.toml] [--out out/pd_sweeps] [--name NAME]
 //                        [--coarsening 4,2] [--precision double,float] [--horizon-ratio 3]
@@ -38,8 +38,9 @@ Row run_one(const pm::io::NosbPdScene& scene) {
   const double exp = std::abs(c.projectile.velocity - 303.5) < 0.05 ? 200.6 : NAN;
   return {scene.precision == "float" ? 1.0 : 0.0, scene.coarsening, c.spacing, c.horizon_ratio, c.stabilization.c_v,
           c.projectile.velocity, double(m.particles()), double(m.bonds()), double(stats.steps), stats.wall_seconds,
-          s.residual_velocity, s.perforated ? 1.0 : 0.0, std::abs(s.residual_velocity - exp), s.core_damage, s.rim_damage,
-          stats.finite ? stats.energy_error() : NAN};
+          stats.diverged ? NAN : s.residual_velocity, s.perforated ? 1.0 : 0.0,
+          stats.diverged ? NAN : std::abs(s.residual_velocity - exp), s.core_damage, s.rim_damage,
+          stats.diverged ? NAN : stats.energy_error()};
 }
 
 std::vector<double> numbers(const std::string& s) {

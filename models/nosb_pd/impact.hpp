@@ -63,9 +63,11 @@ ImpactState analyse_impact(const NosbPd<T, D>& m) {
 }
 
 // Runs an impact up to `steps` steps; with stop_after_perforation, ends once the projectile has been
-// through and free for five samples in a row (the residual velocity no longer changes).
+// through and free for five samples in a row (the residual velocity no longer changes). A run whose
+// accounted energy triples has diverged (the uncontrolled zero-energy modes) and is ended there.
 template <class T, int D>
 RunStats run_impact(NosbPd<T, D>& m, std::int64_t steps, RunHooks hooks, bool stop_after_perforation = true) {
+  if (hooks.energy_limit <= 0) hooks.energy_limit = 3.0;
   int free_samples = 0;
   if (stop_after_perforation)
     hooks.stop = [&] {

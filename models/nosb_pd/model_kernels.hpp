@@ -100,6 +100,13 @@ Kokkos::Array<double, D> vector_sum(const char* label, const VecView<T, D>& v) {
   });
 }
 
+// sum_i e_i (thread-count independent).
+template <class T>
+double scalar_sum(const char* label, const View1<T>& e) {
+  return pd::ordered_sum<1>(label, static_cast<std::int64_t>(e.extent(0)),
+                            KOKKOS_LAMBDA(const std::int64_t i, double* acc) { acc[0] += double(e(i)); })[0];
+}
+
 // sum_i |f_i|^2 / (2 k): energy stored in the penalty springs of the contact forces f_i.
 template <class T, int D>
 double penalty_energy(const VecView<T, D>& force, double stiffness) {

@@ -40,10 +40,11 @@ namespace polymech::nosb_pd {
 
 struct Energies {
   double kinetic = 0, strain = 0, plastic = 0, viscous = 0, hourglass = 0, contact = 0, projectile_kinetic = 0;
+  double short_range = 0;  // potential energy of the short-range springs
   double momentum[3] = {0, 0, 0};  // particles + projectile
   // everything the system holds or has dissipated; equals the initial energy up to the integrator's
   // error and the energy released by breaking bonds
-  double total() const { return kinetic + strain + plastic - viscous - hourglass + contact + projectile_kinetic; }
+  double total() const { return kinetic + strain + plastic - viscous - hourglass + contact + short_range + projectile_kinetic; }
 };
 
 struct ProjectileState {
@@ -81,9 +82,9 @@ class NosbPd {
          {"polymech::pd::deformation_gradient_with_damage"}, "1 byte per bond, 1 real per particle"},
         {"contact", "rigid projectile (blunt cylinder or sphere) against the particles by penalty", {},
          {"polymech::contact::projectile_penalty"}, "D reals per particle (contact force)"},
-        {"short_range", "short-range repulsion between particles of broken regions (Silling & Askari 2005)",
+        {"short_range", "short-range repulsion of close particles: fracture faces, fragments (Silling & Askari 2005)",
          {"damage"}, {"polymech::contact::pd_current_positions", "polymech::contact::pd_short_range"},
-         "D reals per particle and a Verlet list (radius d_s + skin) over the current positions"},
+         "D+1 reals per particle and a Verlet list (radius d_s + skin) over the current positions"},
     };
     return specs;
   }
@@ -136,7 +137,7 @@ class NosbPd {
     if (short_range_) {
       contact::pd_current_positions(f_.x0, f_.u, positions_);
       verlet_->update(positions_);
-      contact::pd_short_range(verlet_->list(), positions_, f_.volume, f_.damage, short_range_params_, f_.a);
+      contact::pd_short_range(verlet_->list(), positions_, f_.volume, short_range_params_, f_.a);
     }
   }
 
@@ -163,6 +164,10 @@ class NosbPd {
     out.viscous = e.viscous;
     out.hourglass = e.hourglass;
     for (int k = 0; k < D; ++k) out.momentum[k] = e.momentum[k] + proj_.mass * proj_.velocity[k];
+    if (short_range_) {
+      contact::pd_short_range_energy(verlet_->list(), positions_, f_.volume, short_range_params_, short_range_energy_);
+      out.short_range = detail::scalar_sum("polymech::nosb_pd::short_range_energy", short_range_energy_);
+    }
     if (contact_) {
       out.contact = detail::penalty_energy(contact_force_, static_cast<double>(penalty_));
       for (int k = 0; k < D; ++k) out.projectile_kinetic += 0.5 * proj_.mass * proj_.velocity[k] * proj_.velocity[k];
@@ -422,6 +427,7 @@ class NosbPd {
     if (contact_) contact_force_ = VecView<T, D>(pre + "contact_force", n);
     if (short_range_) {
       positions_ = VecView<T, D>(pre + "short_range_positions", n);
+      short_range_energy_ = View1<T>(pre + "short_range_energy", n);
       verlet_ = std::make_unique<neighbors::VerletList<T, D>>(short_range_params_.distance,
                                                              static_cast<T>(cfg_.contact.skin * cfg_.spacing),
                                                              neighbors::ListKind::full);
@@ -508,6 +514,7 @@ class NosbPd {
   contact::ShortRangeParams<T> short_range_params_;
   T penalty_ = T(0), work_dt_ = T(0);
   VecView<T, D> contact_force_, positions_;
+  View1<T> short_range_energy_;
   std::unique_ptr<neighbors::VerletList<T, D>> verlet_;
   Kokkos::View<std::uint8_t*, MemSpace> group_;
   ProjectileState proj_;

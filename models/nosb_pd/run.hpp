@@ -18,6 +18,8 @@ struct RunHooks {
   std::int64_t sample_every = 50;                     // energies and projectile (steps)
   // Called after each sample; returning true ends the run (e.g. the projectile is through the plate).
   std::function<bool()> stop;
+  // > 0: end the run as diverged once the accounted energy exceeds this multiple of the initial one.
+  double energy_limit = 0.0;
 };
 
 // One row of the time series.
@@ -32,6 +34,7 @@ struct RunStats {
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
   bool finite = true;
+  bool diverged = false;  // the energy passed RunHooks::energy_limit (or became NaN / Inf)
   double initial_energy = 0.0;
   std::vector<Sample> samples;
   // max |E_total - E_0| / E_0 over the samples
@@ -68,8 +71,11 @@ RunStats run(NosbPd<T, D>& m, std::int64_t steps, const RunHooks& hooks = {}) {
     const std::int64_t k = m.step_index();
     if (hooks.sample_every > 0 && (k % hooks.sample_every == 0 || k == end)) {
       s.samples.push_back(take_sample(m));
-      if (!std::isfinite(s.samples.back().energy.total())) s.finite = false;
-      if (hooks.stop) stop = hooks.stop();
+      const double e = s.samples.back().energy.total();
+      if (!std::isfinite(e)) s.finite = false;
+      if (!s.finite || (hooks.energy_limit > 0 && e > hooks.energy_limit * s.initial_energy)) s.diverged = true;
+      stop = s.diverged;
+      if (!stop && hooks.stop) stop = hooks.stop();
     }
     if (hooks.snapshot && hooks.snapshot_every > 0 && (k % hooks.snapshot_every == 0 || stop)) hooks.snapshot(k);
     if (hooks.after_step) hooks.after_step(k);
