@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "io/mps_elastic_scene.hpp"
+#include "io/nosb_pd_scene.hpp"
 #include "io/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -188,6 +189,7 @@ TEST(Scenes, AccuracyPresetsScaleSpacingTimeStepAndSteps) {
 TEST(Scenes, EveryShippedSceneLoads) {
   const std::map<std::string, std::function<void(const fs::path&)>> loaders = {
       {"mps_elastic", [](const fs::path& p) { io::load_mps_elastic_scene(p); }},
+      {"nosb_pd", [](const fs::path& p) { io::load_nosb_pd_scene(p); }},
   };
   int count = 0;
   for (const auto& e : fs::recursive_directory_iterator(source_dir() / "scenes")) {

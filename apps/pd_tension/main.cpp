@@ -1,0 +1,105 @@
+// Seed 003 §4(1): uniaxial tension of a bar, NOSB peridynamics. Measures Young's modulus (quasi-static,
+// by dynamic relaxation) on the scene's layout, or, with --identify-omega-v, the oscillation frequency
+// omega_v of eq. (3) from the same pull without damping or control (as the report identified it).
+//   pd_tension [--scene scenes/pd/tension_round_bar.toml] [--out out/pd_tension] [--identify-omega-v]
+// Writes summary.json (modulus, reference, relative_error or omega_v, particles, bonds, wall_seconds)
+// and fields.h5 + fields.xdmf (displacement at the end).
+#include <cmath>
+#include <cstdio>
+
+#include "apps/common/app.hpp"
+#include "io/nosb_pd_scene.hpp"
+#include "nosb_pd/tension.hpp"
+
+namespace pm = polymech;
+namespace np = polymech::nosb_pd;
+
+namespace {
+
+template <class T, int D>
+int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool identify) {
+  np::Config& c = scene.config;
+  pm::io::make_output_dir(opt.out);
+  if (identify) {
+    // eq. (3) needs vbar: the effect is enabled with c_v = 0 (no force); no damping, no other control
+    std::vector<std::string> eff = {"velocity_viscosity"};
+    if (c.effects.has("weighted_function")) eff.push_back("weighted_function");
+    c.effects = pm::EffectSet::resolve(eff, np::NosbPd<T, D>::effects());
+    c.stabilization.c_v = 0.0;
+    c.stabilization.omega_v = 1.0;
+    c.mass_damping = 0.0;
+  }
+  np::NosbPd<T, D> model(c);
+  std::fprintf(stderr, "[pd_tension] %s\n  accuracy %s (spacing %.3g m, m = %g), %s, %d particles, %lld bonds, dt %.3g s\n",
+               scene.title.c_str(), scene.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.precision.c_str(), model.particles(),
+               static_cast<long long>(model.bonds()), c.dt);
+  nlohmann::json j;
+  j["case"] = "pd_tension";
+  j["scene"] = scene.file.string();
+  j["title"] = scene.title;
+  j["accuracy"] = scene.accuracy;
+  j["precision"] = scene.precision;
+  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
+  j["spacing"] = c.spacing;
+  j["horizon_ratio"] = c.horizon_ratio;
+  j["particles"] = model.particles();
+  j["bonds"] = model.bonds();
+  j["dt"] = c.dt;
+  if (identify) {
+    const auto r = np::identify_omega_v(model, scene.tension);
+    j["omega_v"] = r.omega;
+    j["zero_crossings"] = r.crossings;
+    j["duration"] = r.duration;
+    j["omega_v_times_spacing_over_cp"] = r.omega * c.spacing / c.material.p_wave_speed();
+    std::printf("omega_v = %.4g rad/s (%lld zero crossings of v - vbar over %.3g s; omega_v h / c_p = %.3f)\n", r.omega,
+                static_cast<long long>(r.crossings), r.duration, r.omega * c.spacing / c.material.p_wave_speed());
+  } else {
+    const auto r = np::run_tension(model, scene.tension);
+    j["modulus"] = r.modulus;
+    j["reference"] = r.reference;
+    j["relative_error"] = r.relative_error;
+    j["gauge_strain"] = r.gauge_strain;
+    j["stress"] = r.stress;
+    j["steps"] = r.steps;
+    j["wall_seconds"] = r.wall_seconds;
+    std::printf("E = %.4g Pa (reference %.4g Pa, %+.2f %%), gauge strain %.4g, %lld steps, %.1f s\n", r.modulus, r.reference,
+                100 * r.relative_error, r.gauge_strain, static_cast<long long>(r.steps), r.wall_seconds);
+  }
+  pm::io::SnapshotMesh mesh;
+  mesh.dim = D;
+  const auto h = model.host_fields();
+  mesh.points = h.x0;
+  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
+  snapshots.add(model.step_index(), model.time(), {{"displacement", D, h.u}, {"velocity", D, h.v}});
+  const auto xdmf = snapshots.finish();
+  j["files"] = {"summary.json", "fields.h5", xdmf.filename().string()};
+  pm::io::write_json(opt.out / "summary.json", j);
+  std::printf("results in %s\n", opt.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Uniaxial tension of a bar, NOSB peridynamics (seed 003 section 4(1))"};
+  pm::apps::CommonOptions opt;
+  pm::apps::add_common_options(app, opt, "scenes/pd/tension_round_bar.toml", "out/pd_tension");
+  bool identify = false;
+  double m = 0;
+  app.add_flag("--identify-omega-v", identify, "measure omega_v of eq. (3) from the undamped pull without control");
+  app.add_option("--horizon-ratio", m, "m = delta / spacing (default: the scene's)")->check(CLI::Range(1.0, 10.0));
+  CLI11_PARSE(app, argc, argv);
+  return pm::apps::guarded("pd_tension", [&] {
+    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::io::NosbPdSceneOptions so;
+    so.accuracy = opt.accuracy;
+    so.precision = opt.precision;
+    so.horizon_ratio = m;
+    const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
+    if (scene.config.loading != np::Loading::tension)
+      throw pm::io::SceneError(opt.scene.string() + ": loading.kind must be \"tension\" for pd_tension");
+    const bool f = scene.precision == "float";
+    if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, identify) : run_case<double, 2>(scene, opt, identify);
+    return f ? run_case<float, 3>(scene, opt, identify) : run_case<double, 3>(scene, opt, identify);
+  });
+}

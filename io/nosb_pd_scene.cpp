@@ -1,0 +1,260 @@
+#include "io/nosb_pd_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "nosb_pd/nosb_pd.hpp"
+
+namespace polymech::io {
+
+namespace np = polymech::nosb_pd;
+
+namespace {
+
+const std::vector<std::string>& pd_accuracy_presets() {
+  static const std::vector<std::string> names = {"draft", "standard", "paper"};
+  return names;
+}
+
+template <class E>
+E pick(const SceneTable& t, const std::string& key, const std::vector<std::pair<std::string, E>>& options,
+       const std::string& fallback = "") {
+  std::vector<std::string> names;
+  for (const auto& o : options) names.push_back(o.first);
+  const std::string v = fallback.empty() ? t.choice(key, names) : t.choice(key, names, fallback);
+  for (const auto& o : options)
+    if (o.first == v) return o.second;
+  return options.front().second;
+}
+
+void read_geometry(const SceneTable& g, np::Config& c) {
+  auto& geo = c.geometry;
+  geo.shape = pick<np::Shape>(g, "shape", {{"box", np::Shape::box}, {"disc", np::Shape::disc}, {"round_bar", np::Shape::round_bar}});
+  if (geo.shape == np::Shape::box) {
+    geo.length = g.real("length", positive());
+    if (c.dimension == 3) geo.width = g.real("width", positive());
+    geo.height = g.real("height", positive());
+  } else if (geo.shape == np::Shape::disc) {
+    geo.radius = g.real("radius", positive());
+    geo.thickness = g.real("thickness", positive());
+  } else {
+    if (c.dimension != 3) g.fail("shape", "= \"round_bar\" needs model.dimension = 3");
+    geo.length = g.real("length", positive());
+    geo.radius = g.real("radius", positive());
+  }
+  g.finish();
+}
+
+void read_material(const SceneTable& m, np::Config& c) {
+  auto& mat = c.material;
+  mat.law = pick<np::Law>(m, "law", {{"elastic", np::Law::elastic}, {"johnson_cook", np::Law::johnson_cook}}, "elastic");
+  mat.density = m.real("density", positive());
+  mat.youngs_modulus = m.real("youngs_modulus", positive());
+  mat.poisson_ratio = m.real("poisson_ratio", Range{-1.0, 0.5, true, true});
+  const auto jc = m.optional_table("johnson_cook");
+  if (mat.law == np::Law::johnson_cook && !jc) m.fail("law", "= \"johnson_cook\" needs a [material.johnson_cook] table");
+  if (mat.law != np::Law::johnson_cook && jc) jc->fail_table("is given, but material.law is not \"johnson_cook\"");
+  if (jc) {
+    mat.jc_a = jc->real("A", positive());
+    mat.jc_b = jc->real("B", non_negative());
+    mat.jc_n = jc->real("n", positive());
+    mat.jc_c = jc->real("C", 0.0, non_negative());
+    mat.jc_reference_rate = jc->real("reference_strain_rate", 1.0, positive());
+    mat.jc_m = jc->real("m", 1.0, positive());
+    mat.room_temperature = jc->real("room_temperature", 293.0, positive());
+    mat.melting_temperature = jc->real("melting_temperature", 0.0, non_negative());
+    if (mat.melting_temperature > 0 && mat.melting_temperature <= mat.room_temperature)
+      jc->fail("melting_temperature", "= " + format_number(mat.melting_temperature) +
+                                          " K is not above room_temperature; allowed: 0 (no thermal softening) or > " +
+                                          format_number(mat.room_temperature) + " K");
+    mat.specific_heat = jc->real("specific_heat", 452.0, positive());
+    mat.taylor_quinney = jc->real("taylor_quinney", 0.9, between(0.0, 1.0));
+    jc->finish();
+  }
+  m.finish();
+}
+
+}  // namespace
+
+NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSceneOptions& options) {
+  const Scene scene = Scene::load(file);
+  const SceneTable root = scene.root();
+  NosbPdScene out;
+  out.file = file;
+  out.title = root.string("title", file.stem().string());
+  np::Config& c = out.config;
+
+  // [model]
+  const SceneTable model = root.table("model");
+  model.choice("kind", {"nosb_pd"});
+  c.dimension = static_cast<int>(model.integer("dimension", 3, 2, 3));
+  const auto effects = model.strings("effects", {});
+  try {
+    c.effects = EffectSet::resolve(effects, np::NosbPd<double, 3>::effects());
+  } catch (const EffectError& e) {
+    model.fail("effects", std::string("is invalid: ") + e.what());
+  }
+  out.precision = model.choice("precision", {"double", "float"}, "double");
+  model.finish();
+
+  // [accuracy]: preset name -> spacing factor
+  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
+  std::string preset = "draft";
+  if (auto acc = root.optional_table("accuracy")) {
+    preset = acc->choice("default", pd_accuracy_presets(), preset);
+    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
+    acc->finish();
+  }
+  if (!options.accuracy.empty()) {
+    if (!factors.count(options.accuracy))
+      throw SceneError(file.string() + ": accuracy '" + options.accuracy + "' is unknown; allowed: draft, standard, paper");
+    preset = options.accuracy;
+  }
+  out.accuracy = preset;
+  out.coarsening = options.coarsening > 0 ? options.coarsening : factors.at(preset);
+  if (!options.precision.empty()) {
+    if (options.precision != "double" && options.precision != "float")
+      throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
+    out.precision = options.precision;
+  }
+  const double f = out.coarsening;
+
+  // [discretization]
+  const SceneTable disc = root.table("discretization");
+  const double spacing = disc.real("spacing", positive());
+  c.spacing = spacing * f;
+  c.horizon_ratio = disc.real("horizon_ratio", 3.0, at_least(1.0));
+  if (options.horizon_ratio > 0) c.horizon_ratio = options.horizon_ratio;
+  c.geometry.layout = pick<np::Layout>(
+      disc, "layout", {{"lattice", np::Layout::lattice}, {"jittered", np::Layout::jittered}, {"cylindrical", np::Layout::cylindrical}},
+      "lattice");
+  c.geometry.jitter = disc.real("jitter", 0.25, Range{0.0, 0.5, false, true});
+  c.geometry.seed = static_cast<std::uint64_t>(disc.integer("seed", 1, 0, std::int64_t(1) << 62));
+  disc.finish();
+
+  // [geometry]
+  read_geometry(root.table("geometry"), c);
+  {
+    const auto& g = c.geometry;
+    const double smallest = g.shape == np::Shape::box ? std::min({g.length, g.height, c.dimension == 3 ? g.width : g.length})
+                            : g.shape == np::Shape::disc ? std::min(g.thickness, g.radius)
+                                                         : std::min(g.length, g.radius);
+    if (c.spacing > smallest)
+      disc.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + preset +
+                               "') is larger than the body (smallest dimension " + format_number(smallest) +
+                               " m); allowed: 0 < spacing <= " + format_number(smallest / f) + " m");
+    if (g.layout == np::Layout::cylindrical && (c.dimension != 3 || g.shape == np::Shape::box))
+      disc.fail("layout", "= \"cylindrical\" conforms to a circle: it needs a 3D disc or round_bar geometry");
+  }
+
+  // [material]
+  read_material(root.table("material"), c);
+
+  // [damage]
+  const auto dmg = root.optional_table("damage");
+  if (c.effects.has("damage") && !dmg) model.fail("effects", "lists \"damage\", which needs a [damage] table");
+  if (dmg) {
+    const bool sc = dmg->has("critical_stretch"), gc = dmg->has("energy_release_rate");
+    if (sc == gc)
+      dmg->fail_table("needs exactly one of critical_stretch (a bond stretch) or energy_release_rate (G_c [J/m^2])");
+    if (sc) {
+      c.damage.criterion = np::DamageCriterion::critical_stretch;
+      c.damage.critical_stretch = dmg->real("critical_stretch", positive());
+    } else {
+      c.damage.criterion = np::DamageCriterion::energy_release_rate;
+      c.damage.energy_release_rate = dmg->real("energy_release_rate", positive());
+    }
+    dmg->finish();
+  }
+
+  // [stabilization]
+  if (auto st = root.optional_table("stabilization")) {
+    c.stabilization.c_v = st->real("c_v", 6.0, non_negative());
+    c.stabilization.omega_v = st->real("omega_v", 0.0, non_negative()) / f;
+    c.stabilization.hourglass = st->real("hourglass", 0.02, non_negative());
+    if (options.c_v >= 0) c.stabilization.c_v = options.c_v;
+    if (c.effects.has("velocity_viscosity") && !(c.stabilization.omega_v > 0))
+      st->fail("omega_v", "is missing or 0; the velocity_viscosity effect needs omega_v > 0 [rad/s] (identify it with "
+                          "the uncontrolled tension test: pd_tension --identify-omega-v)");
+    st->finish();
+  } else if (c.effects.has("velocity_viscosity")) {
+    model.fail("effects", "lists \"velocity_viscosity\", which needs [stabilization] omega_v (and c_v)");
+  }
+
+  // [contact]
+  if (auto ct = root.optional_table("contact")) {
+    c.contact.penalty = ct->real("penalty", 1.0, positive());
+    c.contact.contact_radius = ct->real("contact_radius", 0.5, Range{0.0, 2.0, true, false});
+    c.contact.short_range_distance = ct->real("short_range_distance", 0.9, Range{0.0, 2.0, true, false});
+    c.contact.short_range_factor = ct->real("short_range_factor", 15.0, positive());
+    c.contact.skin = ct->real("skin", 0.5, positive());
+    ct->finish();
+  }
+
+  // [loading]
+  const SceneTable load = root.table("loading");
+  c.loading = pick<np::Loading>(load, "kind", {{"none", np::Loading::none}, {"tension", np::Loading::tension}, {"impact", np::Loading::impact}});
+  if (c.loading == np::Loading::tension) {
+    if (c.geometry.shape == np::Shape::disc) load.fail("kind", "= \"tension\" needs a box or round_bar geometry");
+    c.tension.strain = load.real("strain", 1e-3, Range{0.0, 0.1, true, false});
+    out.tension.ramp = load.real("ramp", 4.0, positive());
+    out.tension.hold = load.real("hold", 10.0, non_negative());
+    c.mass_damping = load.real("damping", np::relaxation_damping(c), non_negative());
+  }
+  if (c.loading == np::Loading::impact) {
+    if (!c.effects.has("contact")) load.fail("kind", "= \"impact\" needs the \"contact\" effect in model.effects");
+    if (c.geometry.shape != np::Shape::disc) load.fail("kind", "= \"impact\" needs a disc (plate) geometry");
+    c.clamp_radius = load.real("clamp_radius", positive());
+    if (c.clamp_radius >= c.geometry.radius)
+      load.fail("clamp_radius", "= " + format_number(c.clamp_radius) +
+                                    " m is not inside the plate; allowed: 0 < clamp_radius < geometry.radius = " +
+                                    format_number(c.geometry.radius) + " m");
+    out.stop_after_perforation = load.boolean("stop_after_perforation", true);
+  }
+  load.finish();
+
+  // [projectile]
+  const auto pr = root.optional_table("projectile");
+  if (c.loading == np::Loading::impact && !pr) load.fail("kind", "= \"impact\" needs a [projectile] table");
+  if (pr) {
+    auto& p = c.projectile;
+    p.shape = pick<np::ProjectileShape>(*pr, "shape", {{"blunt_cylinder", np::ProjectileShape::blunt_cylinder}, {"sphere", np::ProjectileShape::sphere}});
+    p.radius = pr->real("radius", positive());
+    p.length = p.shape == np::ProjectileShape::blunt_cylinder ? pr->real("length", positive()) : 0.0;
+    p.mass = pr->real("mass", positive());
+    p.velocity = options.velocity > 0 ? options.velocity : pr->real("velocity", positive());
+    if (options.velocity > 0) (void)pr->real("velocity", 0.0, Range{});  // still a known key
+    p.standoff = pr->real("standoff", 0.25 * c.spacing, non_negative());
+    if (c.loading == np::Loading::impact && p.radius >= c.clamp_radius)
+      pr->fail("radius", "= " + format_number(p.radius) + " m is not inside the clamped span; allowed: < loading.clamp_radius = " +
+                             format_number(c.clamp_radius) + " m");
+    pr->finish();
+  }
+
+  // [time]
+  const SceneTable time = root.table("time");
+  const double dt = time.real("dt", 0.0, non_negative()) * f;
+  c.dt_safety = time.real("safety", 0.7, Range{0.0, 1.0, true, false});
+  if (c.loading == np::Loading::impact) out.end_time = time.real("end_time", positive());
+  out.sample_every = time.integer("sample_every", 50, 1, 1 << 30);
+  time.finish();
+
+  // [output]
+  if (auto o = root.optional_table("output")) {
+    out.snapshots = o->integer("snapshots", 0, 0, 10000);
+    o->finish();
+  }
+  root.finish();
+
+  // The stability limit of this resolution: refused before anything is allocated at full size.
+  out.stable_dt = c.dimension == 3 ? np::NosbPd<double, 3>::stable_time_step(c) : np::NosbPd<double, 2>::stable_time_step(c);
+  if (dt > 0 && dt > out.stable_dt)
+    time.fail("dt", "= " + format_number(dt / f) + " s (x " + format_number(f) + " = " + format_number(dt) + " s at accuracy '" +
+                        preset + "') is above the stability limit " + format_number(out.stable_dt) + " s of spacing " +
+                        format_number(c.spacing) + " m; allowed: 0 (automatic) or 0 < dt <= " + format_number(out.stable_dt / f) + " s");
+  c.dt = dt > 0 ? dt : c.dt_safety * out.stable_dt;
+  return out;
+}
+
+}  // namespace polymech::io

@@ -1,0 +1,134 @@
+// The first bond pass of a NOSB step: shape tensor K_i, deformation gradient F_i (seed 003 eq. (1)),
+// its rate, bond breakage and the damage field, and the neighbour-mean velocity of eq. (3), all from
+// one gather over i's reference family (full list, fixed neighbour order: the result does not depend
+// on the thread count).
+//
+//   K_i = sum_j omega W_ij xi (x) xi,    F_i = I + [sum_j omega W_ij (u_j - u_i) (x) xi] K_i^-1
+//
+// which is eq. (1), F = [sum omega (Y (x) xi) V_ij][sum omega (xi (x) xi) V_ij]^-1, with Y = xi + u_j - u_i
+// split so that F - I is formed from displacement differences (no cancellation in float). omega is
+// 1 for an intact bond and 0 for a broken one (seed 003 §3(1)); W_ij is V_ij or, with the
+// weighted_function effect, W'_ij of eq. (2) (pd::BondWeight, stored per bond in Fields::bond_weight).
+#pragma once
+
+#include "pd/fields.hpp"
+
+namespace polymech::pd {
+
+template <class T>
+struct DeformationParams {
+  bool damage = false;          // damage effect: break bonds whose stretch exceeds critical_stretch
+  T critical_stretch = T(0);
+  bool rate = false;            // also dF/dt (rate-dependent laws)
+  bool mean_velocity = false;   // velocity_viscosity effect: weighted mean velocity and V_H
+  // A particle whose intact family cannot determine F (fewer than D + 1 intact bonds, or a shape
+  // tensor with det K / (tr K / D)^D below this) is marked failed and carries no stress.
+  T min_shape_quality = T(1e-4);
+};
+
+namespace detail {
+
+template <class T, int D>
+KOKKOS_INLINE_FUNCTION T shape_quality(const Mat<T, D>& K) {
+  const T t = trace(K) / T(D);
+  T tD = t;
+  for (int k = 1; k < D; ++k) tD *= t;
+  return tD > T(0) ? det(K) / tD : T(0);
+}
+
+}  // namespace detail
+
+// The optional parts (bond tests, rate, mean velocity) are template flags so that the bond loop the
+// compiler sees has no branches but the bond test itself.
+template <class T, int D, bool Damage, bool Rate, bool Mean>
+void deformation_gradient_pass(const neighbors::BondFamily& family, const Fields<T, D>& f, const DeformationParams<T>& p) {
+  const T sc = p.critical_stretch, min_quality = p.min_shape_quality;
+  Kokkos::parallel_for(
+      Damage ? "polymech::pd::deformation_gradient_with_damage" : "polymech::pd::deformation_gradient",
+      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const Vec<T, D> xi0 = load<D>(f.x0, i);
+        const Vec<T, D> ui = load<D>(f.u, i);
+        Vec<T, D> vi = Vec<T, D>::zero();
+        if (Rate || Mean) vi = load<D>(f.v, i);
+        // K_i changes only when one of i's bonds breaks: it is kept (as K^-1) between passes and
+        // rebuilt from the intact bonds when it is not known yet or a bond broke in this pass
+        const bool known = f.status(i) & status_shape_known;
+        bool broke = false;
+        auto N = Mat<T, D>::zero();     // sum W (u_j - u_i) (x) xi
+        auto Ndot = Mat<T, D>::zero();  // sum W (v_j - v_i) (x) xi
+        auto vsum = Vec<T, D>::zero();
+        T w_intact = T(0), w_all = T(0);
+        for (Offset k = family.begin(i); k < family.end(i); ++k) {
+          const Index j = family.neighbor(k);
+          const Vec<T, D> xi = load<D>(f.x0, j) - xi0;
+          const T w = f.bond_weight(k);
+          if (Damage) {
+            w_all += w;
+            if (!f.bond_intact(k)) continue;
+          }
+          const Vec<T, D> eta = load<D>(f.u, j) - ui;
+          // stretch (|Y| - |xi|) / |xi| > sc  <=>  |Y|^2 > (1 + sc)^2 |xi|^2 (no square root); the
+          // same test from j's side gives the same answer, so both halves of a bond break together
+          if (Damage && norm2(xi + eta) > (T(1) + sc) * (T(1) + sc) * norm2(xi)) {
+            f.bond_intact(k) = 0;
+            broke = true;
+            continue;
+          }
+          const Vec<T, D> wxi = w * xi;
+          for (int r = 0; r < D; ++r)
+            for (int c = 0; c < D; ++c) N.a[r][c] += eta[r] * wxi[c];
+          if (Rate) {
+            const Vec<T, D> dv = load<D>(f.v, j) - vi;
+            for (int r = 0; r < D; ++r)
+              for (int c = 0; c < D; ++c) Ndot.a[r][c] += dv[r] * wxi[c];
+          }
+          if (Mean) vsum += w * load<D>(f.v, j);
+          if (Damage || Mean) w_intact += w;
+        }
+        Mat<T, D> kinv;
+        if (known && !broke) {
+          kinv = load_mat<D>(f.kinv, i);
+        } else {
+          auto K = Mat<T, D>::zero();
+          int intact = 0;
+          for (Offset k = family.begin(i); k < family.end(i); ++k) {
+            if (Damage && !f.bond_intact(k)) continue;
+            const Vec<T, D> xi = load<D>(f.x0, family.neighbor(k)) - xi0;
+            const T w = f.bond_weight(k);
+            for (int r = 0; r < D; ++r)
+              for (int c = 0; c < D; ++c) K.a[r][c] += w * xi[r] * xi[c];
+            ++intact;
+          }
+          const bool ok = intact > D && detail::shape_quality(K) > min_quality;
+          f.status(i) = ok ? std::uint8_t(status_shape_known) : std::uint8_t(status_shape_known | status_failed);
+          kinv = ok ? inverse(K) : Mat<T, D>::zero();
+          store_mat<D>(f.kinv, i, kinv);
+        }
+        store_mat<D>(f.F, i, Mat<T, D>::identity() + N * kinv);
+        if (Rate) store_mat<D>(f.Fdot, i, Ndot * kinv);
+        if (Damage) f.damage(i) = w_all > T(0) ? T(1) - w_intact / w_all : T(0);
+        if (Mean) {
+          // seed 003 eq. (3): int_H omega v' dV' / int_H omega dV' (zero-weight families: own velocity)
+          store<D>(f.vbar, i, w_intact > T(0) ? (T(1) / w_intact) * vsum : vi);
+          f.horizon_weight(i) = w_intact;
+        }
+      });
+}
+
+// Kernel "polymech::pd::deformation_gradient" (or "..._with_damage" when bonds are tested).
+template <class T, int D>
+void deformation_gradient(const neighbors::BondFamily& family, const Fields<T, D>& f, const DeformationParams<T>& p) {
+  const int flags = (p.damage ? 4 : 0) | (p.rate ? 2 : 0) | (p.mean_velocity ? 1 : 0);
+  switch (flags) {
+    case 0: deformation_gradient_pass<T, D, false, false, false>(family, f, p); break;
+    case 1: deformation_gradient_pass<T, D, false, false, true>(family, f, p); break;
+    case 2: deformation_gradient_pass<T, D, false, true, false>(family, f, p); break;
+    case 3: deformation_gradient_pass<T, D, false, true, true>(family, f, p); break;
+    case 4: deformation_gradient_pass<T, D, true, false, false>(family, f, p); break;
+    case 5: deformation_gradient_pass<T, D, true, false, true>(family, f, p); break;
+    case 6: deformation_gradient_pass<T, D, true, true, false>(family, f, p); break;
+    default: deformation_gradient_pass<T, D, true, true, true>(family, f, p); break;
+  }
+}
+
+}  // namespace polymech::pd

@@ -1,0 +1,147 @@
+// Scenes of the NOSB model: the shipped ones load, and every bad scene stops with one message naming
+// the file, the line, the key and what is allowed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "io/nosb_pd_scene.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+
+namespace {
+
+// A small valid impact scene (draft: 2 mm spacing); tests edit one line of it.
+const char* kBase = R"(title = "pd test scene"
+[model]
+kind = "nosb_pd"
+dimension = 3
+effects = ["velocity_viscosity", "damage", "contact"]
+
+[discretization]
+spacing = 2.0e-3
+horizon_ratio = 3.0
+
+[geometry]
+shape = "disc"
+radius = 0.020
+thickness = 0.006
+
+[material]
+law = "johnson_cook"
+density = 7850.0
+youngs_modulus = 200.0e9
+poisson_ratio = 0.33
+[material.johnson_cook]
+A = 490.0e6
+B = 807.0e6
+n = 0.73
+
+[damage]
+critical_stretch = 0.05
+
+[stabilization]
+c_v = 0.5
+omega_v = 7.0e5
+
+[loading]
+kind = "impact"
+clamp_radius = 0.014
+
+[projectile]
+shape = "blunt_cylinder"
+radius = 0.005
+length = 0.02
+mass = 0.02
+velocity = 300.0
+
+[time]
+end_time = 2.0e-5
+
+[accuracy]
+default = "paper"
+)";
+
+std::string error_of(const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / ("polymech_pd_scene_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  fs::create_directories(dir);
+  const fs::path file = dir / "scene.toml";
+  std::ofstream(file) << text;
+  std::string msg;
+  try {
+    io::load_nosb_pd_scene(file);
+  } catch (const io::SceneError& e) {
+    msg = e.what();
+  }
+  fs::remove_all(dir);
+  return msg;
+}
+
+std::string edit(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base scene";
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
+  const std::string msg = error_of(text);
+  ASSERT_FALSE(msg.empty()) << "the scene loaded, expected an error";
+  EXPECT_TRUE(std::regex_search(msg, std::regex("scene\\.toml:" + std::to_string(line) + ":"))) << msg;
+  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+}
+
+}  // namespace
+
+TEST(PdScenes, BaseSceneLoadsWithAStableTimeStep) {
+  EXPECT_EQ(error_of(kBase), "");
+}
+
+TEST(PdScenes, ShippedScenesLoadAtEveryAccuracy) {
+  const char* d = std::getenv("POLYMECH_SOURCE_DIR");
+  const fs::path dir = (d ? fs::path(d) : fs::path(".")) / "scenes/pd";
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".toml") continue;
+    for (const char* acc : {"draft", "standard"}) {
+      io::NosbPdSceneOptions o;
+      o.accuracy = acc;
+      const auto s = io::load_nosb_pd_scene(e.path(), o);
+      EXPECT_GT(s.config.dt, 0.0) << e.path();
+      EXPECT_LE(s.config.dt, s.stable_dt) << e.path();
+    }
+    ++n;
+  }
+  EXPECT_GE(n, 5);
+}
+
+TEST(PdScenes, BadValuesNameFileLineKeyAndWhatIsAllowed) {
+  expect_error(edit(kBase, "spacing = 2.0e-3", "spacing = -2.0e-3"), 8, {"key 'discretization.spacing'", "must be > 0"});
+  expect_error(edit(kBase, "horizon_ratio = 3.0", "horizon_ratio = 0.8"), 9, {"key 'discretization.horizon_ratio' = 0.8", "must be >= 1"});
+  expect_error(edit(kBase, "horizon_ratio = 3.0", "horizon_ratio = 3.0\nhorizon = 3"), 10,
+               {"unknown key 'discretization.horizon'", "horizon_ratio"});
+  expect_error(edit(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["viscosity", "damage", "contact"])"), 5,
+               {"key 'model.effects'", "unknown effect 'viscosity'", "allowed: weighted_function, velocity_viscosity"});
+  expect_error(edit(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["velocity_viscosity", "damage"])"), 34,
+               {"key 'loading.kind'", "needs the \"contact\" effect"});
+  expect_error(edit(kBase, "omega_v = 7.0e5\n", ""), 29, {"stabilization.omega_v", "velocity_viscosity effect needs omega_v > 0"});
+  expect_error(edit(kBase, "clamp_radius = 0.014", "clamp_radius = 0.03"), 35, {"key 'loading.clamp_radius' = 0.03", "0 < clamp_radius < geometry.radius = 0.02"});
+  expect_error(edit(kBase, "critical_stretch = 0.05", "critical_stretch = 0.05\nenergy_release_rate = 1e5"), 26,
+               {"[damage]", "exactly one of critical_stretch"});
+  expect_error(edit(kBase, "end_time = 2.0e-5", "end_time = 2.0e-5\ndt = 1.0e-6"), 46, {"key 'time.dt' = 1e-06", "above the stability limit"});
+  expect_error(edit(kBase, "[material.johnson_cook]\nA = 490.0e6\nB = 807.0e6\nn = 0.73\n", ""), 17,
+               {"key 'material.law'", "needs a [material.johnson_cook] table"});
+  expect_error(edit(kBase, R"(kind = "impact")", R"(kind = "drop")"), 34, {"key 'loading.kind' = \"drop\"", R"(allowed: "none", "tension", "impact")"});
+}
+
+TEST(PdScenes, MissingFileIsAClearError) {
+  try {
+    io::load_nosb_pd_scene("/nonexistent/pd.toml");
+    FAIL() << "no error";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/pd.toml: scene file not found"), std::string::npos) << e.what();
+  }
+}

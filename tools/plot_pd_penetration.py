@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Plots of one pd_penetration run (seed 003 Figs. 4-5): projectile velocity and energies over time,
+and the damage in a cut through the plate along the projectile's axis.
+
+  /usr/bin/python3 tools/plot_pd_penetration.py out/pd_penetration
+
+Writes projectile.png, energy.png and damage.png into the run folder.
+"""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def main():
+    run = sys.argv[1] if len(sys.argv) > 1 else "out/pd_penetration"
+    summary = json.load(open(os.path.join(run, "summary.json")))
+    p = read_csv(os.path.join(run, "projectile.csv"))
+    e = read_csv(os.path.join(run, "energy.csv"))
+    t = p["time"] * 1e6
+
+    fig, ax = plt.subplots(1, 2, figsize=(10, 3.8))
+    ax[0].plot(t, -p["velocity"], label="NOSB-PD")
+    if summary.get("experiment_residual_velocity"):
+        ax[0].axhline(summary["experiment_residual_velocity"], color="k", ls="--", label="experiment (residual)")
+    ax[0].set_xlabel("time [us]")
+    ax[0].set_ylabel("projectile velocity [m/s]")
+    ax[0].legend(fontsize=8)
+    ax[0].grid(alpha=0.3)
+    ax[1].plot(t, p["nose_position"] * 1e3)
+    ax[1].axhline(-12.0, color="k", ls=":", label="plate bottom")
+    ax[1].set_xlabel("time [us]")
+    ax[1].set_ylabel("nose position [mm]")
+    ax[1].legend(fontsize=8)
+    ax[1].grid(alpha=0.3)
+    fig.suptitle(f"v0 = {summary['initial_velocity']} m/s -> {summary['residual_velocity']:.1f} m/s "
+                 f"({summary['particles']} particles, c_v = {summary['c_v']})")
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "projectile.png"), dpi=110)
+
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    te = e["time"] * 1e6
+    for key, label in (("projectile_kinetic", "projectile kinetic"), ("kinetic", "plate kinetic"), ("strain", "elastic"),
+                       ("plastic", "plastic work"), ("viscous_dissipated", "velocity viscosity"),
+                       ("hourglass_work", "hourglass work"), ("contact", "contact"), ("short_range", "short-range springs")):
+        if np.any(e[key] != 0):
+            ax.plot(te, e[key], label=label)
+    ax.plot(te, e["total"], "k--", label="total")
+    ax.set_xlabel("time [us]")
+    ax.set_ylabel("energy [J]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "energy.png"), dpi=110)
+
+    try:
+        import h5py
+    except ImportError:
+        print("h5py missing: no damage.png")
+        return
+    with h5py.File(os.path.join(run, "fields.h5"), "r") as h:
+        x = h["mesh/points"][...]
+        steps = sorted((k for k in h.keys() if k.startswith("step_")), key=lambda s: int(s.split("_")[1]))
+        last = h[steps[-1]]
+        u = last["displacement"][...]
+        d = last["damage"][...] if "damage" in last else np.zeros(len(x))
+    y = x + u
+    cut = np.abs(x[:, 1]) < 0.6 * summary["spacing"] + 1e-12  # a slab around the x-z plane through the axis
+    fig, ax = plt.subplots(figsize=(8, 3.4))
+    sc = ax.scatter(y[cut, 0] * 1e3, y[cut, 2] * 1e3, c=d[cut], s=4, cmap="inferno", vmin=0, vmax=1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("z [mm]")
+    fig.colorbar(sc, ax=ax, label="damage")
+    ax.set_title(f"damage in the plane through the axis at t = {summary['simulated_time'] * 1e6:.0f} us (seed 003 Fig. 4)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, "damage.png"), dpi=110)
+    print(f"plots: {run}/projectile.png, energy.png, damage.png")
+
+
+if __name__ == "__main__":
+    main()
