@@ -92,12 +92,13 @@ bool finite(const V& v) {
 }
 
 template <class V>
-double magnitude(const V& v) {
-  return std::sqrt(static_cast<double>(abs2(v)));
+double magnitude(const V& v) {  // in double: |v|^2 of a small float scalar would underflow
+  using S = ScalarTraits<V>;
+  return std::hypot(static_cast<double>(S::re(v)), static_cast<double>(S::im(v)));
 }
 
 template <class Op, class V>
-SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const View1<V>& b, const View1<V>& x,
+SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const View1<V>& b_in, const View1<V>& x,
                                 const SolverOptions& o, bool require_spd) {
   using T = real_of<V>;
   using S = ScalarTraits<V>;
@@ -105,28 +106,40 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
   const Index local = A.local_size(), owned = A.owned_size();
   const double eps_bd =
       o.breakdown_tolerance >= 0 ? o.breakdown_tolerance : 64.0 * std::numeric_limits<T>::epsilon();
-  const char* method = require_spd ? "CG" : "COCG";
+  const std::string method = require_spd ? "CG" : "COCG";
   SolveResult res;
-  auto finish = [&](SolveStatus s, std::string why) {
-    res.status = s;
-    res.reason = std::move(why);
-    Kokkos::fence();
-    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return res;
-  };
 
-  View1<V> r("polymech::solvers::r", local), z("polymech::solvers::z", local), p("polymech::solvers::p", local),
-      q("polymech::solvers::q", local);
-  const double bnorm = std::sqrt(norm2("polymech::solvers::rhs_norm", owned, b));
-  if (!std::isfinite(bnorm)) return finish(SolveStatus::non_finite, "the right-hand side holds NaN or Inf");
+  const double bnorm = std::sqrt(norm2("polymech::solvers::rhs_norm", owned, b_in));
+  if (!std::isfinite(bnorm)) {
+    res.status = SolveStatus::non_finite;
+    res.reason = method + ": the right-hand side holds NaN or Inf";
+    return res;
+  }
   if (bnorm == 0.0) {
     Kokkos::deep_copy(x, V(0));
     res.history.push_back(0.0);
-    return finish(SolveStatus::converged, "");
+    res.status = SolveStatus::converged;
+    return res;
   }
+  // Iterate on b / |b| (and x / |b|): the same relative residuals, and no underflow of small data
+  // in float (the duct's right-hand side is ~1e-5 per entry).
+  View1<V> b("polymech::solvers::b_scaled", local), r("polymech::solvers::r", local), z("polymech::solvers::z", local),
+      p("polymech::solvers::p", local), q("polymech::solvers::q", local);
+  scale(local, T(1.0 / bnorm), b_in, b);
+  scale(local, T(1.0 / bnorm), x, x);
   auto true_residual = [&] {  // r = b - A x; returns |r| / |b|
     A.apply(x, r);
-    return std::sqrt(residual_from_product(owned, local, b, r)) / bnorm;
+    return std::sqrt(residual_from_product(owned, local, b, r));
+  };
+  bool true_known = false;
+  auto finish = [&](SolveStatus st, std::string why) {
+    res.status = st;
+    res.reason = std::move(why);
+    if (!true_known) res.true_relative_residual = true_residual();
+    scale(local, T(bnorm), x, x);
+    Kokkos::fence();
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
   };
 
   double rel = true_residual();
@@ -138,81 +151,72 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
     V rho = rz.dot;
     double best = rel;
     int best_at = res.iterations;
-    bool recursive_converged = rel <= o.tolerance;
-    while (!recursive_converged) {
-      if (res.iterations >= o.max_iterations) {
-        res.relative_residual = rel;
-        res.true_relative_residual = true_residual();
-        return finish(SolveStatus::max_iterations, std::string(method) + ": reached the iteration limit " +
-                                                       std::to_string(o.max_iterations) + " at relative residual " +
-                                                       fmt(res.true_relative_residual) + " (tolerance " +
-                                                       fmt(o.tolerance) + ")");
-      }
-      if (!finite(rho)) return finish(SolveStatus::non_finite, std::string(method) + ": r^T z is NaN/Inf");
+    while (rel > o.tolerance) {
+      res.relative_residual = rel;
+      if (res.iterations >= o.max_iterations)
+        return finish(SolveStatus::max_iterations,
+                      method + ": reached the iteration limit " + std::to_string(o.max_iterations) +
+                          " at relative residual " + fmt(rel) + " (tolerance " + fmt(o.tolerance) + ")");
+      if (!finite(rho)) return finish(SolveStatus::non_finite, method + ": r^T z is NaN/Inf");
       if (detail::magnitude(rho) <= eps_bd * std::sqrt(rz.norm2_x * rz.norm2_y))
         return finish(SolveStatus::breakdown_rho,
-                      std::string(method) + ": breakdown at iteration " + std::to_string(res.iterations) +
-                          ": |r^T z| = " + fmt(detail::magnitude(rho)) + " is below " + fmt(eps_bd) +
-                          " |r| |z| (a quasi-null residual of the complex symmetric form)");
+                      method + ": breakdown at iteration " + std::to_string(res.iterations) + ": |r^T z| = " +
+                          fmt(detail::magnitude(rho)) + " is below " + fmt(eps_bd) + " |r| |z| = " +
+                          fmt(eps_bd * std::sqrt(rz.norm2_x * rz.norm2_y)) +
+                          " (a quasi-null residual of the complex symmetric form)");
       if (require_spd && !(S::re(rho) > 0))
-        return finish(SolveStatus::not_positive_definite,
-                      "CG: r^T z = " + fmt(static_cast<double>(S::re(rho))) +
-                          " <= 0: the preconditioner is not positive definite");
+        return finish(SolveStatus::not_positive_definite, "CG: r^T z = " + fmt(static_cast<double>(S::re(rho))) +
+                                                              " <= 0: the preconditioner is not positive definite");
 
       A.apply(p, q);
       const DotNorms<V> pq = dot_with_norms("polymech::solvers::pAp", owned, p, q);
       const V mu = pq.dot;
-      if (!finite(mu)) return finish(SolveStatus::non_finite, std::string(method) + ": p^T A p is NaN/Inf");
+      if (!finite(mu)) return finish(SolveStatus::non_finite, method + ": p^T A p is NaN/Inf");
       if (detail::magnitude(mu) <= eps_bd * std::sqrt(pq.norm2_x * pq.norm2_y))
-        return finish(SolveStatus::breakdown_pap,
-                      std::string(method) + ": breakdown at iteration " + std::to_string(res.iterations) +
-                          ": |p^T A p| = " + fmt(detail::magnitude(mu)) + " is below " + fmt(eps_bd) +
-                          " |p| |A p|");
+        return finish(SolveStatus::breakdown_pap, method + ": breakdown at iteration " +
+                                                      std::to_string(res.iterations) + ": |p^T A p| = " +
+                                                      fmt(detail::magnitude(mu)) + " is below " + fmt(eps_bd) +
+                                                      " |p| |A p| = " + fmt(eps_bd * std::sqrt(pq.norm2_x * pq.norm2_y)));
       if (require_spd && !(S::re(mu) > 0))
-        return finish(SolveStatus::not_positive_definite,
-                      "CG: p^T A p = " + fmt(static_cast<double>(S::re(mu))) +
-                          " <= 0: the operator is not positive definite");
+        return finish(SolveStatus::not_positive_definite, "CG: p^T A p = " + fmt(static_cast<double>(S::re(mu))) +
+                                                              " <= 0: the operator is not positive definite");
       const V alpha = rho / mu;
       const double rr = update_solution_and_residual(owned, local, alpha, p, q, x, r);
       ++res.iterations;
-      rel = std::sqrt(rr) / bnorm;
+      rel = std::sqrt(rr);
+      res.relative_residual = rel;
       res.history.push_back(rel);
       if (o.monitor) o.monitor(res.iterations, rel);
       if (!std::isfinite(rel))
-        return finish(SolveStatus::non_finite, std::string(method) + ": the residual became NaN/Inf at iteration " +
-                                                   std::to_string(res.iterations));
-      if (rel <= o.tolerance) {
-        recursive_converged = true;
-        break;
-      }
+        return finish(SolveStatus::non_finite,
+                      method + ": the residual became NaN/Inf at iteration " + std::to_string(res.iterations));
+      if (rel <= o.tolerance) break;
       if (rel < 0.9 * best) {
         best = rel;
         best_at = res.iterations;
       } else if (res.iterations - best_at >= o.stagnation_window) {
-        res.relative_residual = rel;
-        res.true_relative_residual = true_residual();
-        return finish(SolveStatus::stagnated,
-                      std::string(method) + ": stagnated: no 10 % reduction of the best residual " + fmt(best) +
-                          " in " + std::to_string(o.stagnation_window) + " iterations (at iteration " +
-                          std::to_string(res.iterations) + ")");
+        return finish(SolveStatus::stagnated, method + ": stagnated: no 10 % reduction of the best residual " +
+                                                  fmt(best) + " in " + std::to_string(o.stagnation_window) +
+                                                  " iterations (at iteration " + std::to_string(res.iterations) + ")");
       }
       rz = precondition_and_dot(owned, local, inv_diag, r, z);
       const V beta = rz.dot / rho;
       rho = rz.dot;
       update_direction(local, beta, z, p);
     }
-    res.relative_residual = rel;
     const double tr = true_residual();  // r now holds b - A x
     res.true_relative_residual = tr;
-    if (!std::isfinite(tr)) return finish(SolveStatus::non_finite, std::string(method) + ": the true residual is NaN/Inf");
+    true_known = true;
+    if (!std::isfinite(tr)) return finish(SolveStatus::non_finite, method + ": the true residual is NaN/Inf");
     if (tr <= o.tolerance) return finish(SolveStatus::converged, "");
     const bool progress = res.restarts == 0 || tr < 0.5 * last_true;
     if (res.restarts >= o.max_restarts || !progress)
       return finish(SolveStatus::stagnated,
-                    std::string(method) + ": the recursive residual reached " + fmt(rel) + " but the true residual " +
-                        fmt(tr) + " stays above the tolerance " + fmt(o.tolerance) + " after " +
-                        std::to_string(res.restarts) + " restart(s): the attainable accuracy in " +
-                        (sizeof(T) == 4 ? "float" : "double") + " precision");
+                    method + ": the recursive residual reached " + fmt(rel) + " but the true residual " + fmt(tr) +
+                        " stays above the tolerance " + fmt(o.tolerance) + " after " + std::to_string(res.restarts) +
+                        " restart(s): the attainable accuracy in " + (sizeof(T) == 4 ? "float" : "double") +
+                        " precision");
+    true_known = false;
     last_true = tr;
     rel = tr;
     ++res.restarts;

@@ -122,6 +122,13 @@ DotNorms<V> precondition_and_dot(Index owned, Index local, const View1<V>& inv_d
   return {S::make(dr, di), static_cast<double>(nr), static_cast<double>(nz)};
 }
 
+// y = s x (y may be x).
+template <class V>
+void scale(Index local, real_of<V> s, const View1<V>& x, const View1<V>& y) {
+  Kokkos::parallel_for(
+      "polymech::solvers::scale", range(local), KOKKOS_LAMBDA(const Index i) { y(i) = s * x(i); });
+}
+
 // p = z + beta p.
 template <class V>
 void update_direction(Index local, V beta, const View1<V>& z, const View1<V>& p) {
@@ -145,24 +152,28 @@ DiagonalSummary jacobi_inverse(Index owned, Index local, const View1<V>& diag, c
   using T = real_of<V>;
   using MinLoc = Kokkos::MinLoc<T, Index>;
   typename MinLoc::value_type lo;
-  T hi = 0;
-  Index bad = 0;
   Kokkos::parallel_reduce(
-      "polymech::solvers::jacobi_check", range(owned),
-      KOKKOS_LAMBDA(const Index i, typename MinLoc::value_type& m, T& h, Index& nb) {
+      "polymech::solvers::jacobi_min", range(owned),
+      KOKKOS_LAMBDA(const Index i, typename MinLoc::value_type& m) {
         const T a = kx::sqrt(abs2(diag(i)));
-        if (!kx::isfinite(a)) {
-          ++nb;
-          return;
-        }
-        if (a < m.val) {
+        if (kx::isfinite(a) && a < m.val) {
           m.val = a;
           m.loc = i;
         }
-        if (a > h) h = a;
       },
-      MinLoc(lo), Kokkos::Max<T>(hi), Kokkos::Sum<Index>(bad));
-  return {static_cast<double>(lo.val), static_cast<double>(hi), lo.loc, bad};
+      MinLoc(lo));
+  T hi = 0, bad = 0;  // (Kokkos 3.4 cannot combine MinLoc with other reducers in one pass)
+  Kokkos::parallel_reduce(
+      "polymech::solvers::jacobi_max", range(owned),
+      KOKKOS_LAMBDA(const Index i, T& h, T& nb) {
+        const T a = kx::sqrt(abs2(diag(i)));
+        if (!kx::isfinite(a))
+          nb += T(1);
+        else if (a > h)
+          h = a;
+      },
+      Kokkos::Max<T>(hi), Kokkos::Sum<T>(bad));
+  return {static_cast<double>(lo.val), static_cast<double>(hi), lo.loc, static_cast<Index>(bad)};
 }
 
 }  // namespace polymech::solvers
