@@ -194,4 +194,44 @@ inline std::vector<char> dofs_on_faces(const HexDofs& d, const std::vector<Bound
   return mark;
 }
 
+// Output mesh: each order-p element split into p^3 linear hexahedra through its GLL nodes (XDMF / VTK
+// hexahedron vertex order), on the DoFs as points. Returns elements x p^3 x 8 DoF indices.
+inline std::vector<std::int64_t> linear_subcells(const HexDofs& d) {
+  const int N = d.n1d, p = d.order, N3 = d.nodes_per_element();
+  const std::int64_t ne = static_cast<std::int64_t>(d.element_dofs.size()) / N3;
+  static const int off[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::vector<std::int64_t> cells;
+  cells.reserve(static_cast<std::size_t>(ne) * p * p * p * 8);
+  for (std::int64_t e = 0; e < ne; ++e)
+    for (int k = 0; k < p; ++k)
+      for (int j = 0; j < p; ++j)
+        for (int i = 0; i < p; ++i)
+          for (const auto& o : off)
+            cells.push_back(d.element_dofs[e * N3 + (i + o[0]) + N * ((j + o[1]) + N * (k + o[2]))]);
+  return cells;
+}
+
+// DoFs within `tolerance` of the segment [a, b], sorted along it: (parameter s in [0, 1], DoF).
+inline std::vector<std::pair<double, std::int64_t>> dofs_on_segment(const HexDofs& d, const std::array<double, 3>& a,
+                                                                    const std::array<double, 3>& b, double tolerance) {
+  double ab[3], len2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    ab[k] = b[k] - a[k];
+    len2 += ab[k] * ab[k];
+  }
+  std::vector<std::pair<double, std::int64_t>> out;
+  for (std::int64_t i = 0; i < d.count; ++i) {
+    const double* x = &d.coordinates[3 * i];
+    double s = 0;
+    for (int k = 0; k < 3; ++k) s += (x[k] - a[k]) * ab[k];
+    s = len2 > 0 ? s / len2 : 0.0;
+    if (s < -1e-12 || s > 1 + 1e-12) continue;
+    double dist2 = 0;
+    for (int k = 0; k < 3; ++k) dist2 += (x[k] - a[k] - s * ab[k]) * (x[k] - a[k] - s * ab[k]);
+    if (dist2 <= tolerance * tolerance) out.push_back({s, i});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace polymech::helmholtz
