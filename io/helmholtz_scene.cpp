@@ -99,7 +99,8 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
     for (int d = 0; d < 3; ++d) {
       if (n[d] != std::floor(n[d]) || n[d] > 1e5)
         mesh.fail("elements", "must be whole numbers in [1, 100000], got " + format_number(n[d]));
-      box.elements[d] = std::max(1, static_cast<int>(std::lround(n[d] / out.coarsening)));
+      box.elements[d] = options.elements[d] > 0 ? options.elements[d]
+                                                : std::max(1, static_cast<int>(std::lround(n[d] / out.coarsening)));
       out.box_elements[d] = box.elements[d];
     }
     box.perturbation = mesh.real("perturbation", 0.0, between(0.0, 1.0));
@@ -118,7 +119,8 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
     if (!options.accuracy.empty())
       throw SceneError(file.string() + ": accuracy '" + options.accuracy +
                        "' cannot be applied: presets scale box meshes and this scene reads a Gmsh mesh");
-    if (options.coarsening > 0) throw SceneError(file.string() + ": a Gmsh mesh cannot be coarsened");
+    if (options.coarsening > 0 || options.elements[0] > 0)
+      throw SceneError(file.string() + ": a Gmsh mesh cannot be coarsened or refined here");
     out.accuracy = "mesh file";
     const std::string name = mesh.string("file");
     std::filesystem::path path = name;

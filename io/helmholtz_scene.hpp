@@ -40,6 +40,7 @@ struct HelmholtzSceneOptions {
   int order = 0;             // > 0 overrides [discretization].order
   double coarsening = 0.0;   // > 0 overrides the preset's factor (box meshes)
   double frequency = 0.0;    // > 0 overrides [acoustics].frequency
+  std::array<int, 3> elements{0, 0, 0};  // > 0 overrides the box's element counts (sweeps)
 };
 
 HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const HelmholtzSceneOptions& options = {});

@@ -413,4 +413,11 @@ class Helmholtz {
   double setup_seconds_ = 0.0, solve_seconds_ = 0.0;
 };
 
+// Compiled once, in models/helmholtz/helmholtz.cpp (library polymech_helmholtz): the kernels of four
+// orders in two precisions are instantiated there and not in every file that uses the model.
+extern template class HelmholtzOperator<double>;
+extern template class HelmholtzOperator<float>;
+extern template class Helmholtz<double>;
+extern template class Helmholtz<float>;
+
 }  // namespace polymech::helmholtz
