@@ -82,28 +82,21 @@ Row run_one(const pm::io::HelmholtzScene& scene) {
           2.0 * M_PI / c.wavenumber() / h * c.order};
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::size_t a = 0;
-  while (a <= s.size()) {
-    const auto b = std::min(s.find(',', a), s.size());
-    if (b > a) out.push_back(s.substr(a, b - a));
-    a = b + 1;
-  }
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Accuracy-cost sweep of the Helmholtz model (seed 002 paper 3)"};
-  std::string case_list = "cube,duct,duct_2khz", orders = "1,2,3,4", precisions = "double,float",
-              out = "out/accuracy_cost";
+  std::vector<std::string> wanted = {"cube", "duct", "duct_2khz"}, precisions = {"double", "float"};
+  std::vector<int> orders = {1, 2, 3, 4};
+  std::string out = "out/accuracy_cost";
   double max_dofs = 8e5, float_tolerance = 1e-6;
   int threads = -1;
-  app.add_option("--cases", case_list, "cases: cube, duct, duct_2khz")->capture_default_str();
-  app.add_option("--orders", orders, "element orders")->capture_default_str();
-  app.add_option("--precision", precisions, "precisions: double,float")->capture_default_str();
+  app.add_option("--cases", wanted, "cases: cube, duct, duct_2khz")->delimiter(',')->capture_default_str();
+  app.add_option("--orders", orders, "element orders")->delimiter(',')->check(CLI::Range(1, 4))->capture_default_str();
+  app.add_option("--precision", precisions, "precisions: double,float")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"double", "float"}))
+      ->capture_default_str();
   app.add_option("--max-dofs", max_dofs, "skip meshes with more DoFs")->capture_default_str();
   app.add_option("--float-tolerance", float_tolerance, "COCG tolerance of the float runs")->capture_default_str();
   app.add_option("--out", out, "output folder")->capture_default_str();
@@ -112,7 +105,6 @@ int main(int argc, char** argv) {
   return pm::apps::guarded("sweep_helmholtz", [&] {
     pm::apps::KokkosSession kokkos(threads);
     pm::io::make_output_dir(out);
-    const auto wanted = split(case_list);
     for (const auto& w : wanted)
       if (std::none_of(cases().begin(), cases().end(), [&](const Case& c) { return c.name == w; }))
         throw std::invalid_argument("--cases: unknown case '" + w + "'; allowed: cube, duct, duct_2khz");
@@ -133,9 +125,8 @@ int main(int argc, char** argv) {
         }
         pm::io::write_csv(std::filesystem::path(out) / ("helmholtz_" + cs.name + ".csv"), header, cols);
       };
-      for (const auto& prec : split(precisions))
-        for (const auto& os : split(orders)) {
-          const int p = std::stoi(os);
+      for (const auto& prec : precisions)
+        for (const int p : orders) {
           for (int nx : cs.elements.at(p)) {
             const std::array<int, 3> n = {nx, std::max(1, nx / cs.aspect[1]), std::max(1, nx / cs.aspect[2])};
             const double dofs = double(p * n[0] + 1) * (p * n[1] + 1) * (p * n[2] + 1);

@@ -19,15 +19,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
+
 COLORS = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", 4: "tab:red"}
 TARGETS = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
-
-
-def load(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
 
 
 def pareto(x, y):
@@ -62,7 +58,7 @@ def cheapest_table(col, case):
 
 
 def plot(path):
-    col = load(path)
+    col = load_csv(path)
     case = os.path.basename(path).replace("helmholtz_", "").replace(".csv", "")
     freq = col["frequency"][0] if col["frequency"].size else 0
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))

@@ -16,12 +16,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def load(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
 
 
 def main():
@@ -29,7 +25,7 @@ def main():
     with open(os.path.join(run, "summary.json")) as f:
         s = json.load(f)
     title = f"{s['title']}\np = {s['order']}, {s['dofs']} DoFs, {s['precision']}"
-    c = load(os.path.join(run, "convergence.csv"))
+    c = load_csv(os.path.join(run, "convergence.csv"))
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.semilogy(c["iteration"], c["relative_residual"])
     ax.axhline(s["tolerance"], color="0.5", ls="--", label=f"tolerance {s['tolerance']:g}")
@@ -43,7 +39,7 @@ def main():
     print(f"plot: {os.path.join(run, 'convergence.png')}")
     prof = os.path.join(run, "profile.csv")
     if os.path.exists(prof):
-        p = load(prof)
+        p = load_csv(prof)
         fig, ax = plt.subplots(figsize=(7, 4))
         ax.plot(p["x"], p["pressure_re"], "o", ms=3, label="Re p, FEM")
         ax.plot(p["x"], p["pressure_im"], "s", ms=3, label="Im p, FEM")

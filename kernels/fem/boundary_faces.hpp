@@ -26,8 +26,8 @@ struct HexFaces {
 namespace detail {
 
 template <class T, int N, int Q>
-struct FaceSquares {
-  T BB[Q][N];
+struct FaceMatrix {  // a Q x N matrix captured by value into a kernel
+  T M[Q][N];
 };
 
 template <class T, class V, int N>
@@ -76,76 +76,55 @@ void apply_face_mass(const char* label, const HexFaces<T, V>& f, const View1<V>&
         label, Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
         KOKKOS_LAMBDA(const Index face) {
           V u[N2], uq[Q2], tmp[Q * N];
-          for (int a = 0; a < N2; ++a) {
-            const Index d = dofs(face, a);
-            if (Constrained)
-              u[a] = d >= 0 ? x(d) : V(0);
-            else
-              u[a] = x(decode_dof(d));
-          }
+          gather<Constrained, N2>(dofs, face, x, u);
           interpolate_2d<N, Q>(b.B, u, uq, tmp);
           const V cf = coef(face);
           for (int q = 0; q < Q2; ++q) uq[q] = (cf * w(face, q)) * uq[q];
           integrate_2d<N, Q>(b.B, uq, u, tmp);
-          for (int a = 0; a < N2; ++a) {
-            const Index d = dofs(face, a);
-            if (Constrained) {
-              if (d >= 0) y(d) += u[a];
-            } else {
-              y(decode_dof(d)) += u[a];
-            }
-          }
+          scatter_add<Constrained, N2>(dofs, face, u, y);
+        });
+  }
+}
+
+// out += c_f int M(s) M(t) w dGamma per face node: with M = B the load int N dGamma (eq. (20)), with
+// M = B^2 the diagonal of the face mass (eq. (19)).
+template <class T, class V, int N>
+void integrate_face_weights(const char* label, const HexFaces<T, V>& f, const T (&M)[N][N], const View1<V>& out) {
+  constexpr int Q = N, N2 = N * N, Q2 = Q * Q;
+  FaceMatrix<T, N, Q> m{};
+  for (int q = 0; q < Q; ++q)
+    for (int i = 0; i < N; ++i) m.M[q][i] = M[q][i];
+  const auto dofs = f.dofs;
+  const auto w = f.weights;
+  const auto coef = f.coefficient;
+  for (int c = 0; c < f.colors(); ++c) {
+    Kokkos::parallel_for(
+        label, Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
+        KOKKOS_LAMBDA(const Index face) {
+          T wq[Q2], v[N2], tmp[Q * N];
+          for (int q = 0; q < Q2; ++q) wq[q] = w(face, q);
+          integrate_2d<N, Q>(m.M, wq, v, tmp);
+          const V cf = coef(face);
+          V cv[N2];
+          for (int a = 0; a < N2; ++a) cv[a] = cf * v[a];
+          scatter_add<true, N2>(dofs, face, cv, out);
         });
   }
 }
 
 template <class T, class V, int N>
 void add_face_mass_diagonal(const HexFaces<T, V>& f, const View1<V>& diag) {
-  constexpr int Q = N, N2 = N * N, Q2 = Q * Q;
-  const HexBasis<T, N, Q> b = make_hex_basis<T, N, Q>();
-  FaceSquares<T, N, Q> s{};
-  for (int q = 0; q < Q; ++q)
-    for (int i = 0; i < N; ++i) s.BB[q][i] = b.B[q][i] * b.B[q][i];
-  const auto dofs = f.dofs;
-  const auto w = f.weights;
-  const auto coef = f.coefficient;
-  for (int c = 0; c < f.colors(); ++c) {
-    Kokkos::parallel_for(
-        "polymech::fem::impedance_diagonal", Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index face) {
-          T wq[Q2], d[N2], tmp[Q * N];
-          for (int q = 0; q < Q2; ++q) wq[q] = w(face, q);
-          integrate_2d<N, Q>(s.BB, wq, d, tmp);
-          const V cf = coef(face);
-          for (int a = 0; a < N2; ++a) {
-            const Index dof = dofs(face, a);
-            if (dof >= 0) diag(dof) += cf * d[a];
-          }
-        });
-  }
+  const HexBasis<T, N, N> b = make_hex_basis<T, N, N>();
+  T BB[N][N];
+  for (int q = 0; q < N; ++q)
+    for (int i = 0; i < N; ++i) BB[q][i] = b.B[q][i] * b.B[q][i];
+  integrate_face_weights<T, V, N>("polymech::fem::impedance_diagonal", f, BB, diag);
 }
 
 template <class T, class V, int N>
 void add_face_load(const HexFaces<T, V>& f, const View1<V>& rhs) {
-  constexpr int Q = N, N2 = N * N, Q2 = Q * Q;
-  const HexBasis<T, N, Q> b = make_hex_basis<T, N, Q>();
-  const auto dofs = f.dofs;
-  const auto w = f.weights;
-  const auto coef = f.coefficient;
-  for (int c = 0; c < f.colors(); ++c) {
-    Kokkos::parallel_for(
-        "polymech::fem::boundary_load", Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index face) {
-          T wq[Q2], v[N2], tmp[Q * N];
-          for (int q = 0; q < Q2; ++q) wq[q] = w(face, q);
-          integrate_2d<N, Q>(b.B, wq, v, tmp);
-          const V cf = coef(face);
-          for (int a = 0; a < N2; ++a) {
-            const Index dof = dofs(face, a);
-            if (dof >= 0) rhs(dof) += cf * v[a];
-          }
-        });
-  }
+  const HexBasis<T, N, N> b = make_hex_basis<T, N, N>();
+  integrate_face_weights<T, V, N>("polymech::fem::boundary_load", f, b.B, rhs);
 }
 
 }  // namespace detail

@@ -35,13 +35,7 @@ void apply_volume(const char* label, const HexElements<T>& el, T mass_coefficien
         label, Kokkos::RangePolicy<ExecSpace>(el.color_offsets[c], el.color_offsets[c + 1]),
         KOKKOS_LAMBDA(const Index e) {
           V u[N3], uq[Q3], g0[Q3], g1[Q3], g2[Q3], t1[Q * Q * N], t2[Q * Q * N];
-          for (int a = 0; a < N3; ++a) {
-            const Index d = dofs(e, a);
-            if (Constrained)
-              u[a] = d >= 0 ? x(d) : V(0);
-            else
-              u[a] = x(decode_dof(d));
-          }
+          gather<Constrained, N3>(dofs, e, x, u);
           interpolate<N, Q>(b.B, u, uq, t1, t2);
           gradient_at_points<Q>(b.Dq, uq, g0, g1, g2);
           const T* G = &geo(e, 0);
@@ -54,14 +48,7 @@ void apply_volume(const char* label, const HexElements<T>& el, T mass_coefficien
           }
           gradient_transpose_add<Q>(b.Dq, g0, g1, g2, uq);
           integrate<N, Q, false>(b.B, uq, u, t1, t2);
-          for (int a = 0; a < N3; ++a) {
-            const Index d = dofs(e, a);
-            if (Constrained) {
-              if (d >= 0) y(d) += u[a];
-            } else {
-              y(decode_dof(d)) += u[a];
-            }
-          }
+          scatter_add<Constrained, N3>(dofs, e, u, y);
         });
   }
 }
@@ -103,10 +90,9 @@ void add_volume_diagonal(const HexElements<T>& el, T mass_coefficient, const Vie
           term(g02, T(2), s.BD, s.BB, s.BD);
           term(g12, T(2), s.BB, s.BD, s.BD);
           term(wdetj, mass_coefficient, s.BB, s.BB, s.BB);
-          for (int a = 0; a < N3; ++a) {
-            const Index dof = dofs(e, a);
-            if (dof >= 0) diag(dof) += V(d[a]);
-          }
+          V dv[N3];
+          for (int a = 0; a < N3; ++a) dv[a] = V(d[a]);
+          scatter_add<true, N3>(dofs, e, dv, diag);
         });
   }
 }

@@ -31,6 +31,33 @@ namespace polymech::fem {
 KOKKOS_INLINE_FUNCTION Index decode_dof(Index d) { return d >= 0 ? d : -1 - d; }
 KOKKOS_INLINE_FUNCTION Index constrained_dof(Index d) { return -1 - d; }
 
+// u[a] = x(map(i, a)) for the Count nodes of item i (element or face). Constrained = true: DoFs under
+// a Dirichlet condition read as zero (the operator on the free DoFs); false: every DoF is read.
+template <bool Constrained, int Count, class Map, class X, class V>
+KOKKOS_FORCEINLINE_FUNCTION void gather(const Map& map, Index i, const X& x, V* u) {
+  for (int a = 0; a < Count; ++a) {
+    const Index d = map(i, a);
+    if (Constrained)
+      u[a] = d >= 0 ? x(d) : V(0);
+    else
+      u[a] = x(decode_dof(d));
+  }
+}
+
+// y(map(i, a)) += u[a]; Constrained = true skips DoFs under a Dirichlet condition. Callers launch one
+// colour at a time, so no two items of a launch touch the same DoF.
+template <bool Constrained, int Count, class Map, class Y, class V>
+KOKKOS_FORCEINLINE_FUNCTION void scatter_add(const Map& map, Index i, const V* u, const Y& y) {
+  for (int a = 0; a < Count; ++a) {
+    const Index d = map(i, a);
+    if (Constrained) {
+      if (d >= 0) y(d) += u[a];
+    } else {
+      y(decode_dof(d)) += u[a];
+    }
+  }
+}
+
 // Geometric factors stored per quadrature point q of an element: the symmetric
 // G = w det(J) J^-1 J^-T (6 values) and w det(J), so that
 //   (A_e)_ab = sum_q grad_ref(phi_a)^T G grad_ref(phi_b),  (M_e)_ab = sum_q w det(J) phi_a phi_b.
@@ -135,9 +162,16 @@ JacobianCheck compute_geometry(const Kokkos::View<Index**, Kokkos::LayoutRight, 
   return {worst.val, worst.loc};
 }
 
+// The geometric factors in precision T: the double View itself, or a rounded copy.
+inline void store_geometry(const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& from,
+                           Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& to) {
+  to = from;
+}
 template <class T>
-void cast_geometry(const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& from,
-                   const Kokkos::View<T**, Kokkos::LayoutRight, MemSpace>& to) {
+void store_geometry(const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& from,
+                    Kokkos::View<T**, Kokkos::LayoutRight, MemSpace>& out) {
+  out = Kokkos::View<T**, Kokkos::LayoutRight, MemSpace>("polymech::fem::geometry", from.extent(0), from.extent(1));
+  const auto to = out;
   const Index m = static_cast<Index>(from.extent(1));
   Kokkos::parallel_for(
       "polymech::fem::geometry_to_precision", range(static_cast<Index>(from.extent(0))), KOKKOS_LAMBDA(const Index e) {
@@ -159,13 +193,7 @@ JacobianCheck compute_geometry(HexElements<T>& el, const Kokkos::View<double* [3
     Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> geo("polymech::fem::geometry", el.elements(),
                                                               geometry_components * Q * Q * Q);
     check = detail::compute_geometry<N, Q>(el.dofs, x, geo);
-    if constexpr (std::is_same_v<T, double>) {
-      el.geometry = geo;
-    } else {
-      el.geometry = Kokkos::View<T**, Kokkos::LayoutRight, MemSpace>("polymech::fem::geometry", el.elements(),
-                                                                     geometry_components * Q * Q * Q);
-      detail::cast_geometry(geo, el.geometry);
-    }
+    detail::store_geometry(geo, el.geometry);
   });
   return check;
 }

@@ -2,14 +2,10 @@
 // or unusable file stops with one message naming the file, the line and what is allowed.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <regex>
 
 #include "io/gmsh_msh.hpp"
+#include "support/error_messages.hpp"
 
-namespace fs = std::filesystem;
 namespace io = polymech::io;
 
 namespace {
@@ -70,47 +66,26 @@ $Elements
 $EndElements
 )";
 
-fs::path write_temp(const std::string& text) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / (std::string("polymech_msh_test_") + info->name());
-  fs::create_directories(dir);
-  const fs::path p = dir / "mesh.msh";
-  std::ofstream(p) << text;
-  return p;
-}
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the mesh";
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
-int line_of(const std::string& text, const std::string& fragment) {
-  const auto at = text.find(fragment);
-  return at == std::string::npos ? -1 : 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
-}
-
-// The error names "mesh.msh:<line>:" and contains every fragment.
-void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
-  const fs::path p = write_temp(text);
-  std::string msg;
+// Reads `text` as mesh.msh and returns the error message (empty if it was accepted).
+std::string error_of(const std::string& text) {
+  polymech::testing::TempDir dir;
   try {
-    io::read_gmsh_hex_mesh(p);
+    io::read_gmsh_hex_mesh(dir.write("mesh.msh", text));
   } catch (const io::MeshError& e) {
-    msg = e.what();
+    return e.what();
   }
-  ASSERT_FALSE(msg.empty()) << "the mesh was accepted";
-  if (line > 0) {
-    EXPECT_TRUE(std::regex_search(msg, std::regex("mesh\\.msh:" + std::to_string(line) + ":"))) << msg;
-  }
-  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+  return "";
+}
+
+void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
+  polymech::testing::expect_message(error_of(text), "mesh.msh", line, fragments);
 }
 
 }  // namespace
 
 TEST(GmshMsh, ReadsHexahedraAndNamedBoundaryFaces) {
-  const auto m = io::read_gmsh_hex_mesh(write_temp(kMesh));
+  polymech::testing::TempDir dir;
+  const auto m = io::read_gmsh_hex_mesh(dir.write("mesh.msh", kMesh));
   EXPECT_EQ(m.vertex_count(), 12);
   EXPECT_EQ(m.element_count(), 2);
   ASSERT_EQ(m.boundary_names.size(), 2u);
@@ -135,43 +110,43 @@ TEST(GmshMsh, MissingFile) {
 }
 
 TEST(GmshMsh, OtherVersionsAndBinaryAreRefused) {
-  expect_error(replace(kMesh, "4.1 0 8", "2.2 0 8"), 2, {"MSH version 2.2 is not supported", "allowed: 4.1"});
-  expect_error(replace(kMesh, "4.1 0 8", "4.1 1 8"), 2, {"binary MSH files are not supported", "ASCII"});
+  expect_error(polymech::testing::replace_once(kMesh, "4.1 0 8", "2.2 0 8"), 2, {"MSH version 2.2 is not supported", "allowed: 4.1"});
+  expect_error(polymech::testing::replace_once(kMesh, "4.1 0 8", "4.1 1 8"), 2, {"binary MSH files are not supported", "ASCII"});
 }
 
 TEST(GmshMsh, NonHexahedralVolumesAreRefused) {
-  const std::string t = replace(kMesh, "3 1 5 2", "3 1 4 2");
-  expect_error(t, line_of(t, "3 1 4 2"), {"4-node tetrahedron elements are not supported", "8-node hexahedra (type 5)"});
-  const std::string q = replace(kMesh, "3 1 5 2", "3 1 12 2");
-  expect_error(q, line_of(q, "3 1 12 2"), {"27-node hexahedron"});
+  const std::string t = polymech::testing::replace_once(kMesh, "3 1 5 2", "3 1 4 2");
+  expect_error(t, polymech::testing::line_of(t, "3 1 4 2"), {"4-node tetrahedron elements are not supported", "8-node hexahedra (type 5)"});
+  const std::string q = polymech::testing::replace_once(kMesh, "3 1 5 2", "3 1 12 2");
+  expect_error(q, polymech::testing::line_of(q, "3 1 12 2"), {"27-node hexahedron"});
 }
 
 TEST(GmshMsh, UnknownNodeTag) {
-  const std::string t = replace(kMesh, "4 2 3 6 5 8 9 12 11", "4 2 3 6 5 8 9 99 11");
-  expect_error(t, line_of(t, "4 2 3 6 5 8 9 99 11"), {"element 4 refers to node 99, which is not in $Nodes"});
+  const std::string t = polymech::testing::replace_once(kMesh, "4 2 3 6 5 8 9 12 11", "4 2 3 6 5 8 9 99 11");
+  expect_error(t, polymech::testing::line_of(t, "4 2 3 6 5 8 9 99 11"), {"element 4 refers to node 99, which is not in $Nodes"});
 }
 
 TEST(GmshMsh, InvertedHexahedron) {
-  const std::string t = replace(kMesh, "3 1 2 5 4 7 8 11 10", "3 7 8 11 10 1 2 5 4");
-  expect_error(t, line_of(t, "3 7 8 11 10 1 2 5 4"),
+  const std::string t = polymech::testing::replace_once(kMesh, "3 1 2 5 4 7 8 11 10", "3 7 8 11 10 1 2 5 4");
+  expect_error(t, polymech::testing::line_of(t, "3 7 8 11 10 1 2 5 4"),
                {"hexahedron 3 is inverted or degenerate", "allowed: > 0", "Gmsh's hexahedron order"});
-  const std::string d = replace(kMesh, "3 1 2 5 4 7 8 11 10", "3 1 2 5 4 7 8 11 11");
-  expect_error(d, line_of(d, "3 1 2 5 4 7 8 11 11"), {"repeats a node"});
+  const std::string d = polymech::testing::replace_once(kMesh, "3 1 2 5 4 7 8 11 10", "3 1 2 5 4 7 8 11 11");
+  expect_error(d, polymech::testing::line_of(d, "3 1 2 5 4 7 8 11 11"), {"repeats a node"});
 }
 
 TEST(GmshMsh, BoundaryQuadrangleThatIsNotOnTheBoundary) {
-  const std::string t = replace(kMesh, "2 3 6 12 9", "2 2 5 11 8");  // the interior face x = 1
-  expect_error(t, line_of(t, "2 2 5 11 8"), {"quadrangle 2 of boundary 'right' is not a face on the boundary"});
+  const std::string t = polymech::testing::replace_once(kMesh, "2 3 6 12 9", "2 2 5 11 8");  // the interior face x = 1
+  expect_error(t, polymech::testing::line_of(t, "2 2 5 11 8"), {"quadrangle 2 of boundary 'right' is not a face on the boundary"});
 }
 
 TEST(GmshMsh, MalformedNumbersAndTruncation) {
-  const std::string t = replace(kMesh, "2 1 1\n$EndNodes", "2 one 1\n$EndNodes");
-  expect_error(t, line_of(t, "2 one 1"), {"'one' is not a number"});
+  const std::string t = polymech::testing::replace_once(kMesh, "2 1 1\n$EndNodes", "2 one 1\n$EndNodes");
+  expect_error(t, polymech::testing::line_of(t, "2 one 1"), {"'one' is not a number"});
   const std::string cut = std::string(kMesh).substr(0, std::string(kMesh).find("0 1 1\n1 1 1"));
   expect_error(cut, -1, {"unexpected end of file"});
-  const std::string count = replace(kMesh, "1 12 1 12", "1 13 1 13");
+  const std::string count = polymech::testing::replace_once(kMesh, "1 12 1 12", "1 13 1 13");
   expect_error(count, -1, {"announced 13 nodes, found 12"});
-  const std::string end = replace(kMesh, "$EndNodes", "$EndNode");
-  expect_error(end, line_of(end, "$EndNode"), {"expected $EndNodes"});
+  const std::string end = polymech::testing::replace_once(kMesh, "$EndNodes", "$EndNode");
+  expect_error(end, polymech::testing::line_of(end, "$EndNode"), {"expected $EndNodes"});
   expect_error("hello\n", 1, {"expected a section header"});
 }

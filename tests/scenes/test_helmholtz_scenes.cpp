@@ -6,11 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "helmholtz/helmholtz.hpp"
 #include "io/helmholtz_scene.hpp"
+#include "support/error_messages.hpp"
 
 namespace fs = std::filesystem;
 namespace io = polymech::io;
@@ -56,54 +56,27 @@ impedance = 445.9
 kind = "duct"
 )";
 
-class TempScene {
- public:
-  explicit TempScene(const std::string& text, const std::string& mesh_text = "") {
-    dir_ = fs::temp_directory_path() /
-           ("polymech_hz_scene_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::create_directories(dir_);
-    path_ = dir_ / "scene.toml";
-    std::ofstream(path_) << text;
-    if (!mesh_text.empty()) std::ofstream(dir_ / "mesh.msh") << mesh_text;
-  }
-  ~TempScene() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  const fs::path& path() const { return path_; }
+using polymech::testing::replace_once;
 
- private:
-  fs::path dir_, path_;
-};
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base scene";
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
+// Loads `text` as scene.toml (with mesh.msh next to it if given) and checks the error.
 void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments,
                   const std::string& mesh_text = "", const io::HelmholtzSceneOptions& options = {}) {
-  TempScene t(text, mesh_text);
+  polymech::testing::TempDir dir;
+  if (!mesh_text.empty()) dir.write("mesh.msh", mesh_text);
   std::string msg;
   try {
-    io::load_helmholtz_scene(t.path(), options);
+    io::load_helmholtz_scene(dir.write("scene.toml", text), options);
   } catch (const io::SceneError& e) {
     msg = e.what();
   }
-  ASSERT_FALSE(msg.empty()) << "the scene loaded, expected an error";
-  if (line > 0) {
-    EXPECT_TRUE(std::regex_search(msg, std::regex("scene\\.toml:" + std::to_string(line) + ":"))) << msg;
-  }
-  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+  polymech::testing::expect_message(msg, "scene.toml", line, fragments);
 }
 
 }  // namespace
 
 TEST(HelmholtzScenes, BaseSceneLoads) {
-  TempScene t(kBase);
-  const auto s = io::load_helmholtz_scene(t.path());
+  polymech::testing::TempDir dir;
+  const auto s = io::load_helmholtz_scene(dir.write("scene.toml", kBase));
   EXPECT_EQ(s.config.order, 2);
   EXPECT_EQ(s.config.mesh.element_count(), 20);
   EXPECT_EQ(s.config.boundaries.size(), 2u);
@@ -116,61 +89,61 @@ TEST(HelmholtzScenes, BaseSceneLoads) {
 }
 
 TEST(HelmholtzScenes, OrderOutOfRange) {
-  expect_error(replace(kBase, "order = 2", "order = 0"), 7,
+  expect_error(replace_once(kBase, "order = 2", "order = 0"), 7,
                {"key 'discretization.order' = 0 is out of range", "an integer in [1, 4]"});
-  expect_error(replace(kBase, "order = 2", "order = 7"), 7, {"= 7 is out of range", "[1, 4]"});
+  expect_error(replace_once(kBase, "order = 2", "order = 7"), 7, {"= 7 is out of range", "[1, 4]"});
   io::HelmholtzSceneOptions o;
   o.order = 5;
   expect_error(kBase, -1, {"order 5 is not supported; allowed: 1..4"}, "", o);
 }
 
 TEST(HelmholtzScenes, BadMeshSizes) {
-  expect_error(replace(kBase, "lengths = [1.0, 0.2, 0.1]", "lengths = [-1.0, 0.2, 0.1]"), 11,
+  expect_error(replace_once(kBase, "lengths = [1.0, 0.2, 0.1]", "lengths = [-1.0, 0.2, 0.1]"), 11,
                {"key 'mesh.lengths'", "-1", "must be > 0"});
-  expect_error(replace(kBase, "elements = [10, 2, 1]", "elements = [10, 2.5, 1]"), 12,
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2.5, 1]"), 12,
                {"key 'mesh.elements'", "whole numbers"});
-  expect_error(replace(kBase, "elements = [10, 2, 1]", "elements = [10, 2]"), 12, {"must have 3 entries"});
-  expect_error(replace(kBase, "elements = [10, 2, 1]", "elements = [10, 2, 1]\nperturbation = 0.9"), 13,
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2]"), 12, {"must have 3 entries"});
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2, 1]\nperturbation = 0.9"), 13,
                {"key 'mesh.perturbation' = 0.9 inverts element", "allowed: a perturbation that keeps every element valid"});
 }
 
 TEST(HelmholtzScenes, EffectsAndBoundariesMustAgree) {
-  expect_error(replace(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "gravity"])"),
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "gravity"])"),
                4, {"key 'model.effects'", "unknown effect 'gravity'", "allowed: dirichlet, impedance, vibrating"});
-  expect_error(replace(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating"])"), 26,
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating"])"), 26,
                {"key 'boundary[1].kind' = \"impedance\" needs effect 'impedance' in model.effects"});
-  expect_error(replace(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "dirichlet"])"),
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "dirichlet"])"),
                4, {"lists effect 'dirichlet' but no [[boundary]] has kind = \"dirichlet\""});
 }
 
 TEST(HelmholtzScenes, BoundaryNamesAndValues) {
-  expect_error(replace(kBase, R"(names = ["xmax"])", R"(names = ["outlet"])"), 25,
+  expect_error(replace_once(kBase, R"(names = ["xmax"])", R"(names = ["outlet"])"), 25,
                {"key 'boundary[1].names' names boundary 'outlet', which the mesh does not have",
                 "xmin, xmax, ymin, ymax, zmin, zmax"});
-  expect_error(replace(kBase, R"(names = ["xmax"])", R"(names = ["xmin"])"), 25, {"a second time"});
-  expect_error(replace(kBase, "impedance = 445.9", "impedance = -1.0"), 27,
+  expect_error(replace_once(kBase, R"(names = ["xmax"])", R"(names = ["xmin"])"), 25, {"a second time"});
+  expect_error(replace_once(kBase, "impedance = 445.9", "impedance = -1.0"), 27,
                {"key 'boundary[1].impedance' = -1 is out of range: must be > 0"});
-  expect_error(replace(kBase, "impedance = 445.9\n", ""), 24, {"key 'boundary[1].impedance' is missing"});
-  expect_error(replace(kBase, "velocity = 0.014", "velocity = 0.014\nimpedance = 3.0"), 23,
+  expect_error(replace_once(kBase, "impedance = 445.9\n", ""), 24, {"key 'boundary[1].impedance' is missing"});
+  expect_error(replace_once(kBase, "velocity = 0.014", "velocity = 0.014\nimpedance = 3.0"), 23,
                {"unknown key 'boundary[0].impedance'", "kind, names, velocity"});
-  expect_error(replace(kBase, R"(kind = "vibrating")", R"(kind = "absorbing")"), 21,
+  expect_error(replace_once(kBase, R"(kind = "vibrating")", R"(kind = "absorbing")"), 21,
                {"key 'boundary[0].kind' = \"absorbing\"", R"("rigid", "dirichlet", "impedance", "vibrating")"});
 }
 
 TEST(HelmholtzScenes, UnknownKeysAndMissingTables) {
-  expect_error(replace(kBase, "density = 1.3", "density = 1.3\nspeed = 3.0"), 18,
+  expect_error(replace_once(kBase, "density = 1.3", "density = 1.3\nspeed = 3.0"), 18,
                {"unknown key 'acoustics.speed'", "density, frequency, sound_speed"});
-  expect_error(replace(kBase, "[acoustics]\n", "[acoustic]\n"), 1, {"[acoustics] is missing"});
-  expect_error(replace(kBase, "frequency = 500.0", "frequency = -500.0"), 16,
+  expect_error(replace_once(kBase, "[acoustics]\n", "[acoustic]\n"), 1, {"[acoustics] is missing"});
+  expect_error(replace_once(kBase, "frequency = 500.0", "frequency = -500.0"), 16,
                {"key 'acoustics.frequency' = -500", "must be > 0"});
 }
 
 TEST(HelmholtzScenes, GmshMeshErrorsNameBothFiles) {
-  const std::string gmsh = replace(replace(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
+  const std::string gmsh = replace_once(replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
                                            "kind = \"gmsh\"\nfile = \"mesh.msh\""),
                                    "[analytic]", "[accuracy]\ndefault = \"draft\"\n\n[analytic]");
   expect_error(gmsh, 28, {"accuracy presets scale box meshes"});
-  const std::string plain = replace(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
+  const std::string plain = replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
                                     "kind = \"gmsh\"\nfile = \"mesh.msh\"");
   expect_error(plain, 11, {"key 'mesh.file' = \"mesh.msh\": no such file"});
   expect_error(plain, 11, {"key 'mesh.file' = \"mesh.msh\" cannot be used", "mesh.msh:2: MSH version 2.2 is not supported"},
@@ -188,11 +161,11 @@ TEST(HelmholtzScenes, GmshDuctSolvesToTheAnalyticPressure) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   std::string text = buffer.str();
-  text = replace(text, "meshes/duct_lc050.msh", (source_dir() / "scenes/helmholtz/meshes/duct_lc100.msh").string());
-  TempScene t(text);
+  text = replace_once(text, "meshes/duct_lc050.msh", (source_dir() / "scenes/helmholtz/meshes/duct_lc100.msh").string());
+  polymech::testing::TempDir dir;
   io::HelmholtzSceneOptions o;
   o.order = 2;
-  const auto s = io::load_helmholtz_scene(t.path(), o);
+  const auto s = io::load_helmholtz_scene(dir.write("scene.toml", text), o);
   EXPECT_EQ(s.config.mesh.element_count(), 23);
   hz::Helmholtz<double> model(s.config);
   const auto r = model.solve();
