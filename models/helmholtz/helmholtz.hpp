@@ -118,142 +118,22 @@ class Helmholtz {
     return specs;
   }
 
-  explicit Helmholtz(const Config& c) : cfg_(c) {
-    const auto t0 = std::chrono::steady_clock::now();
-    validate(c);
-    field_ = AnalyticField::from(c);
-    dofs_ = number_dofs(c.mesh, c.order);
-    if (c.node_perturbation > 0) {
-      const auto ext = exterior_faces(c.mesh);
-      perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), c.node_perturbation, mean_element_size() / c.order);
-    }
-    const Index n = static_cast<Index>(dofs_.count);
-    const int N3 = dofs_.nodes_per_element();
-
-    // Dirichlet DoFs
-    std::vector<char> constrained(static_cast<std::size_t>(n), 0);
-    if (c.effects.has("dirichlet")) {
-      const auto faces = faces_of(BoundaryKind::dirichlet);
-      constrained = dofs_on_faces(dofs_, faces);
-    }
-    auto encode = [&](std::int32_t d) { return constrained[d] ? fem::constrained_dof(d) : d; };
-
-    // elements, grouped by colour
-    const auto colors = color_by_shared_vertices(c.mesh.hexes, 8, c.mesh.vertex_count());
-    std::vector<std::int32_t> offsets;
-    sort_by_color(colors, element_order_, offsets);
-    el_.order = c.order;
-    el_.owned = n;
-    el_.ghost = 0;
-    el_.color_offsets.assign(offsets.begin(), offsets.end());
-    el_.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::element_dofs",
-                                                                     element_order_.size(), N3);
-    {
-      auto h = Kokkos::create_mirror_view(el_.dofs);
-      for (std::size_t s = 0; s < element_order_.size(); ++s)
-        for (int a = 0; a < N3; ++a) h(s, a) = encode(dofs_.element_dofs[element_order_[s] * N3 + a]);
-      Kokkos::deep_copy(el_.dofs, h);
-    }
-    x_ = CoordinateView("polymech::helmholtz::coordinates", n);
-    {
-      auto h = Kokkos::create_mirror_view(x_);
-      for (Index i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(i) + k];
-      Kokkos::deep_copy(x_, h);
-    }
-    jacobian_ = fem::compute_geometry(el_, x_);
-    if (!(jacobian_.min_ratio > 0.0))
-      throw std::invalid_argument(
-          "helmholtz: " + c.mesh.describe_element(element_order_[jacobian_.element]) +
-          " is inverted or too distorted: det J / (volume / 8) = " + detail::format_g(jacobian_.min_ratio) +
-          " at a node or quadrature point of the order-" + std::to_string(c.order) +
-          " map (allowed: > 0 everywhere); check the vertex order (Gmsh hexahedron numbering) and the distortion");
-
-    // boundary faces of the enabled effects
-    fem::HexFaces<T, C> impedance;
-    if (c.effects.has("impedance")) impedance = build_faces(BoundaryKind::impedance, constrained, "impedance");
-    if (c.effects.has("vibrating")) vibrating_ = build_faces(BoundaryKind::vibrating, constrained, "vibrating");
-
-    // constrained DoFs and their values
-    if (c.effects.has("dirichlet")) {
-      std::vector<Index> list;
-      for (Index i = 0; i < n; ++i)
-        if (constrained[i]) list.push_back(i);
-      constrained_ = detail::to_device<Index>("polymech::helmholtz::dirichlet_dofs", list);
-      double value = 0.0;
-      for (const auto& b : c.boundaries)
-        if (b.kind == BoundaryKind::dirichlet) value = b.value;
-      View1<Kokkos::complex<double>> g("polymech::helmholtz::dirichlet_values_double", list.size());
-      detail::dirichlet_data(constrained_, x_, field_, value, field_.kind != AnalyticKind::none, g);
-      dirichlet_values_ = View1<C>("polymech::helmholtz::dirichlet_values", list.size());
-      detail::to_precision(g, dirichlet_values_);
-    }
-    const double k = c.wavenumber();
-    op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
-    solution_ = View1<C>("polymech::helmholtz::solution", n);
-    Kokkos::fence();
-    setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
+  explicit Helmholtz(const Config& c);
 
   // Right-hand side of eq. (16): q (eq. (20)) minus the Dirichlet lifting, g on constrained rows.
   // x0 receives the initial guess (g on constrained DoFs, 0 elsewhere).
-  void right_hand_side(const View1<C>& rhs, const View1<C>& x0) const {
-    Kokkos::deep_copy(rhs, C(0));
-    Kokkos::deep_copy(x0, C(0));
-    if (vibrating_.faces() > 0) fem::add_face_load(vibrating_, rhs);
-    if (constrained_.extent(0) > 0) {
-      fem::set_constrained_values(constrained_, dirichlet_values_, x0);
-      View1<C> lift("polymech::helmholtz::dirichlet_lift", rhs.extent(0));
-      op_.apply_unconstrained(x0, lift);
-      detail::subtract(rhs, lift);
-      fem::set_constrained_values(constrained_, dirichlet_values_, rhs);
-    }
-  }
+  void right_hand_side(const View1<C>& rhs, const View1<C>& x0) const;
 
   // Solves eq. (16) with COCG (Jacobi-preconditioned unless the config says otherwise). A diagonal
   // that vanishes or is not finite makes Jacobi impossible: that is a std::runtime_error saying where.
   solvers::SolveResult solve() { return solve(cfg_.solver); }
-  solvers::SolveResult solve(const solvers::SolverOptions& options) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const Index n = op_.local_size();
-    View1<C> rhs("polymech::helmholtz::rhs", n);
-    right_hand_side(rhs, solution_);
-    View1<C> inv;
-    if (cfg_.jacobi) {
-      View1<C> diag("polymech::helmholtz::diagonal", n);
-      op_.diagonal(diag);
-      inv = View1<C>("polymech::helmholtz::inverse_diagonal", n);
-      const auto s = solvers::jacobi_inverse(op_.owned_size(), n, diag, inv);
-      if (s.non_finite > 0 || !(s.min_abs > 1e-12 * s.max_abs))
-        throw std::runtime_error("helmholtz: the operator diagonal " +
-                                 (s.non_finite > 0 ? std::string("is not finite")
-                                                   : "vanishes (|d| = " + detail::format_g(s.min_abs) + " vs max " +
-                                                         detail::format_g(s.max_abs) + ") at DoF " +
-                                                         std::to_string(s.argmin) + " " + where(s.argmin)) +
-                                 ": Jacobi preconditioning is impossible at this k h; refine the mesh or set "
-                                 "solver.preconditioner = \"none\"");
-    }
-    result_ = solvers::cocg(op_, inv, rhs, solution_, options);
-    Kokkos::fence();
-    solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return result_;
-  }
+  solvers::SolveResult solve(const solvers::SolverOptions& options);
 
   // eq. (28) against the case's analytic field (double precision whatever T is).
-  fem::ErrorIntegrals l2_error() const {
-    if (field_.kind == AnalyticKind::none) throw std::invalid_argument("helmholtz: this case has no analytic field");
-    View1<Kokkos::complex<double>> u("polymech::helmholtz::solution_double", solution_.extent(0));
-    detail::to_double(solution_, u);
-    return fem::l2_error(cfg_.order, el_.dofs, x_, u, field_);
-  }
+  fem::ErrorIntegrals l2_error() const;
 
   // Host copies for output.
-  std::vector<std::complex<double>> host_solution() const {
-    auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), solution_);
-    std::vector<std::complex<double>> out(m.extent(0));
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {static_cast<double>(m(i).real()), static_cast<double>(m(i).imag())};
-    return out;
-  }
+  std::vector<std::complex<double>> host_solution() const;
   std::vector<std::complex<double>> host_analytic() const {
     std::vector<std::complex<double>> out(static_cast<std::size_t>(dofs_.count));
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -272,12 +152,7 @@ class Helmholtz {
     }
     return t;
   }
-  std::vector<char> constrained_mask() const {
-    std::vector<char> mask(static_cast<std::size_t>(dofs_.count), 0);
-    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), constrained_);
-    for (std::size_t k = 0; k < h.extent(0); ++k) mask[h(k)] = 1;
-    return mask;
-  }
+  std::vector<char> constrained_mask() const;
 
   const Config& config() const { return cfg_; }
   const HexDofs& dofs() const { return dofs_; }
@@ -356,40 +231,7 @@ class Helmholtz {
     return out;
   }
 
-  fem::HexFaces<T, C> build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name) {
-    const FaceTerm term = face_term(kind);
-    const int N = dofs_.n1d, N3 = dofs_.nodes_per_element();
-    std::vector<std::int64_t> verts;
-    for (const auto& f : term.faces)
-      for (int v : hex_face_vertices(f.face)) verts.push_back(cfg_.mesh.hexes[8 * f.element + v]);
-    std::vector<std::int64_t> order;
-    std::vector<std::int32_t> offsets;
-    sort_by_color(color_by_shared_vertices(verts, 4, cfg_.mesh.vertex_count()), order, offsets);
-    fem::HexFaces<T, C> f;
-    f.order = cfg_.order;
-    f.color_offsets.assign(offsets.begin(), offsets.end());
-    const std::string prefix = "polymech::helmholtz::" + name;
-    f.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>(prefix + "_face_dofs", order.size(), N * N);
-    f.coefficient = View1<C>(prefix + "_face_coefficients", order.size());
-    auto hd = Kokkos::create_mirror_view(f.dofs);
-    auto hc = Kokkos::create_mirror_view(f.coefficient);
-    for (std::size_t s = 0; s < order.size(); ++s) {
-      const BoundaryFace& bf = term.faces[order[s]];
-      const auto nodes = face_local_nodes(N, bf.face);
-      for (int a = 0; a < N * N; ++a) {
-        const std::int32_t d = dofs_.element_dofs[bf.element * N3 + nodes[a]];
-        hd(s, a) = constrained[d] ? fem::constrained_dof(d) : d;
-      }
-      const auto cf = term.coefficient[order[s]];
-      hc(s) = C(static_cast<T>(cf.real()), static_cast<T>(cf.imag()));
-    }
-    Kokkos::deep_copy(f.dofs, hd);
-    Kokkos::deep_copy(f.coefficient, hc);
-    const double ratio = fem::compute_face_weights(f, x_, prefix + "_face_weights");
-    if (!(ratio > 0.0))
-      throw std::invalid_argument("helmholtz: a " + name + " boundary face is degenerate (zero area at a point)");
-    return f;
-  }
+  fem::HexFaces<T, C> build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name);
 
   std::string where(Index dof) const {
     if (dof < 0 || dof >= dofs_.count) return "";
@@ -413,10 +255,191 @@ class Helmholtz {
   double setup_seconds_ = 0.0, solve_seconds_ = 0.0;
 };
 
+// Member functions that launch kernels are defined out of the class (not inline), so the explicit
+// instantiation declarations below keep every other translation unit from instantiating them.
+
+template <class T>
+Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
+  const auto t0 = std::chrono::steady_clock::now();
+  validate(c);
+  field_ = AnalyticField::from(c);
+  dofs_ = number_dofs(c.mesh, c.order);
+  if (c.node_perturbation > 0) {
+    const auto ext = exterior_faces(c.mesh);
+    perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), c.node_perturbation, mean_element_size() / c.order);
+  }
+  const Index n = static_cast<Index>(dofs_.count);
+  const int N3 = dofs_.nodes_per_element();
+
+  // Dirichlet DoFs
+  std::vector<char> constrained(static_cast<std::size_t>(n), 0);
+  if (c.effects.has("dirichlet")) {
+    const auto faces = faces_of(BoundaryKind::dirichlet);
+    constrained = dofs_on_faces(dofs_, faces);
+  }
+  auto encode = [&](std::int32_t d) { return constrained[d] ? fem::constrained_dof(d) : d; };
+
+  // elements, grouped by colour
+  const auto colors = color_by_shared_vertices(c.mesh.hexes, 8, c.mesh.vertex_count());
+  std::vector<std::int32_t> offsets;
+  sort_by_color(colors, element_order_, offsets);
+  el_.order = c.order;
+  el_.owned = n;
+  el_.ghost = 0;
+  el_.color_offsets.assign(offsets.begin(), offsets.end());
+  el_.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::element_dofs",
+                                                                   element_order_.size(), N3);
+  {
+    auto h = Kokkos::create_mirror_view(el_.dofs);
+    for (std::size_t s = 0; s < element_order_.size(); ++s)
+      for (int a = 0; a < N3; ++a) h(s, a) = encode(dofs_.element_dofs[element_order_[s] * N3 + a]);
+    Kokkos::deep_copy(el_.dofs, h);
+  }
+  x_ = CoordinateView("polymech::helmholtz::coordinates", n);
+  {
+    auto h = Kokkos::create_mirror_view(x_);
+    for (Index i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(i) + k];
+    Kokkos::deep_copy(x_, h);
+  }
+  jacobian_ = fem::compute_geometry(el_, x_);
+  if (!(jacobian_.min_ratio > 0.0))
+    throw std::invalid_argument(
+        "helmholtz: " + c.mesh.describe_element(element_order_[jacobian_.element]) +
+        " is inverted or too distorted: det J / (volume / 8) = " + detail::format_g(jacobian_.min_ratio) +
+        " at a node or quadrature point of the order-" + std::to_string(c.order) +
+        " map (allowed: > 0 everywhere); check the vertex order (Gmsh hexahedron numbering) and the distortion");
+
+  // boundary faces of the enabled effects
+  fem::HexFaces<T, C> impedance;
+  if (c.effects.has("impedance")) impedance = build_faces(BoundaryKind::impedance, constrained, "impedance");
+  if (c.effects.has("vibrating")) vibrating_ = build_faces(BoundaryKind::vibrating, constrained, "vibrating");
+
+  // constrained DoFs and their values
+  if (c.effects.has("dirichlet")) {
+    std::vector<Index> list;
+    for (Index i = 0; i < n; ++i)
+      if (constrained[i]) list.push_back(i);
+    constrained_ = detail::to_device<Index>("polymech::helmholtz::dirichlet_dofs", list);
+    double value = 0.0;
+    for (const auto& b : c.boundaries)
+      if (b.kind == BoundaryKind::dirichlet) value = b.value;
+    View1<Kokkos::complex<double>> g("polymech::helmholtz::dirichlet_values_double", list.size());
+    detail::dirichlet_data(constrained_, x_, field_, value, field_.kind != AnalyticKind::none, g);
+    dirichlet_values_ = View1<C>("polymech::helmholtz::dirichlet_values", list.size());
+    detail::to_precision(g, dirichlet_values_);
+  }
+  const double k = c.wavenumber();
+  op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
+  solution_ = View1<C>("polymech::helmholtz::solution", n);
+  Kokkos::fence();
+  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+template <class T>
+void Helmholtz<T>::right_hand_side(const View1<C>& rhs, const View1<C>& x0) const {
+  Kokkos::deep_copy(rhs, C(0));
+  Kokkos::deep_copy(x0, C(0));
+  if (vibrating_.faces() > 0) fem::add_face_load(vibrating_, rhs);
+  if (constrained_.extent(0) > 0) {
+    fem::set_constrained_values(constrained_, dirichlet_values_, x0);
+    View1<C> lift("polymech::helmholtz::dirichlet_lift", rhs.extent(0));
+    op_.apply_unconstrained(x0, lift);
+    detail::subtract(rhs, lift);
+    fem::set_constrained_values(constrained_, dirichlet_values_, rhs);
+  }
+}
+
+template <class T>
+solvers::SolveResult Helmholtz<T>::solve(const solvers::SolverOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Index n = op_.local_size();
+  View1<C> rhs("polymech::helmholtz::rhs", n);
+  right_hand_side(rhs, solution_);
+  View1<C> inv;
+  if (cfg_.jacobi) {
+    View1<C> diag("polymech::helmholtz::diagonal", n);
+    op_.diagonal(diag);
+    inv = View1<C>("polymech::helmholtz::inverse_diagonal", n);
+    const auto s = solvers::jacobi_inverse(op_.owned_size(), n, diag, inv);
+    if (s.non_finite > 0 || !(s.min_abs > 1e-12 * s.max_abs))
+      throw std::runtime_error("helmholtz: the operator diagonal " +
+                               (s.non_finite > 0 ? std::string("is not finite")
+                                                 : "vanishes (|d| = " + detail::format_g(s.min_abs) + " vs max " +
+                                                       detail::format_g(s.max_abs) + ") at DoF " +
+                                                       std::to_string(s.argmin) + " " + where(s.argmin)) +
+                               ": Jacobi preconditioning is impossible at this k h; refine the mesh or set "
+                               "solver.preconditioner = \"none\"");
+  }
+  result_ = solvers::cocg(op_, inv, rhs, solution_, options);
+  Kokkos::fence();
+  solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result_;
+}
+
+template <class T>
+fem::ErrorIntegrals Helmholtz<T>::l2_error() const {
+  if (field_.kind == AnalyticKind::none) throw std::invalid_argument("helmholtz: this case has no analytic field");
+  View1<Kokkos::complex<double>> u("polymech::helmholtz::solution_double", solution_.extent(0));
+  detail::to_double(solution_, u);
+  return fem::l2_error(cfg_.order, el_.dofs, x_, u, field_);
+}
+
+template <class T>
+std::vector<std::complex<double>> Helmholtz<T>::host_solution() const {
+  auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), solution_);
+  std::vector<std::complex<double>> out(m.extent(0));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {static_cast<double>(m(i).real()), static_cast<double>(m(i).imag())};
+  return out;
+}
+
+template <class T>
+std::vector<char> Helmholtz<T>::constrained_mask() const {
+  std::vector<char> mask(static_cast<std::size_t>(dofs_.count), 0);
+  auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), constrained_);
+  for (std::size_t k = 0; k < h.extent(0); ++k) mask[h(k)] = 1;
+  return mask;
+}
+
+template <class T>
+auto Helmholtz<T>::build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name)
+    -> fem::HexFaces<T, C> {
+  const FaceTerm term = face_term(kind);
+  const int N = dofs_.n1d, N3 = dofs_.nodes_per_element();
+  std::vector<std::int64_t> verts;
+  for (const auto& f : term.faces)
+    for (int v : hex_face_vertices(f.face)) verts.push_back(cfg_.mesh.hexes[8 * f.element + v]);
+  std::vector<std::int64_t> order;
+  std::vector<std::int32_t> offsets;
+  sort_by_color(color_by_shared_vertices(verts, 4, cfg_.mesh.vertex_count()), order, offsets);
+  fem::HexFaces<T, C> f;
+  f.order = cfg_.order;
+  f.color_offsets.assign(offsets.begin(), offsets.end());
+  const std::string prefix = "polymech::helmholtz::" + name;
+  f.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>(prefix + "_face_dofs", order.size(), N * N);
+  f.coefficient = View1<C>(prefix + "_face_coefficients", order.size());
+  auto hd = Kokkos::create_mirror_view(f.dofs);
+  auto hc = Kokkos::create_mirror_view(f.coefficient);
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    const BoundaryFace& bf = term.faces[order[s]];
+    const auto nodes = face_local_nodes(N, bf.face);
+    for (int a = 0; a < N * N; ++a) {
+      const std::int32_t d = dofs_.element_dofs[bf.element * N3 + nodes[a]];
+      hd(s, a) = constrained[d] ? fem::constrained_dof(d) : d;
+    }
+    const auto cf = term.coefficient[order[s]];
+    hc(s) = C(static_cast<T>(cf.real()), static_cast<T>(cf.imag()));
+  }
+  Kokkos::deep_copy(f.dofs, hd);
+  Kokkos::deep_copy(f.coefficient, hc);
+  const double ratio = fem::compute_face_weights(f, x_, prefix + "_face_weights");
+  if (!(ratio > 0.0))
+    throw std::invalid_argument("helmholtz: a " + name + " boundary face is degenerate (zero area at a point)");
+  return f;
+}
+
 // Compiled once, in models/helmholtz/helmholtz.cpp (library polymech_helmholtz): the kernels of four
 // orders in two precisions are instantiated there and not in every file that uses the model.
-extern template class HelmholtzOperator<double>;
-extern template class HelmholtzOperator<float>;
 extern template class Helmholtz<double>;
 extern template class Helmholtz<float>;
 

@@ -25,27 +25,13 @@ class HelmholtzOperator {
 
   // y = K x on the free DoFs, y = x on the constrained ones. A distributed version would update the
   // ghost entries of x here (halo exchange) and add the ghost rows of y to their owners afterwards.
-  void apply(const View1<V>& x, const View1<V>& y) const {
-    Kokkos::deep_copy(y, V(0));
-    fem::apply_helmholtz_volume(el_, m_, x, y);
-    if (imp_.faces() > 0) fem::apply_face_mass(imp_, x, y);
-    if (constrained_.extent(0) > 0) fem::copy_constrained_rows(constrained_, x, y);
-  }
+  void apply(const View1<V>& x, const View1<V>& y) const;
 
   // y = K x with every DoF free (the Dirichlet lifting K g).
-  void apply_unconstrained(const View1<V>& x, const View1<V>& y) const {
-    Kokkos::deep_copy(y, V(0));
-    fem::apply_helmholtz_volume_unconstrained(el_, m_, x, y);
-    if (imp_.faces() > 0) fem::apply_face_mass_unconstrained(imp_, x, y);
-  }
+  void apply_unconstrained(const View1<V>& x, const View1<V>& y) const;
 
   // d = diag(K) without forming K (1 on constrained rows).
-  void diagonal(const View1<V>& d) const {
-    Kokkos::deep_copy(d, V(0));
-    fem::add_helmholtz_volume_diagonal(el_, m_, d);
-    if (imp_.faces() > 0) fem::add_face_mass_diagonal(imp_, d);
-    if (constrained_.extent(0) > 0) fem::fill_constrained(constrained_, V(1), d);
-  }
+  void diagonal(const View1<V>& d) const;
 
   const fem::HexElements<T>& elements() const { return el_; }
   const fem::HexFaces<T, V>& impedance_faces() const { return imp_; }
@@ -63,5 +49,32 @@ class HelmholtzOperator {
   View1<Index> constrained_;
   T m_ = T(0);
 };
+
+template <class T>
+void HelmholtzOperator<T>::apply(const View1<V>& x, const View1<V>& y) const {
+  Kokkos::deep_copy(y, V(0));
+  fem::apply_helmholtz_volume(el_, m_, x, y);
+  if (imp_.faces() > 0) fem::apply_face_mass(imp_, x, y);
+  if (constrained_.extent(0) > 0) fem::copy_constrained_rows(constrained_, x, y);
+}
+
+template <class T>
+void HelmholtzOperator<T>::apply_unconstrained(const View1<V>& x, const View1<V>& y) const {
+  Kokkos::deep_copy(y, V(0));
+  fem::apply_helmholtz_volume_unconstrained(el_, m_, x, y);
+  if (imp_.faces() > 0) fem::apply_face_mass_unconstrained(imp_, x, y);
+}
+
+template <class T>
+void HelmholtzOperator<T>::diagonal(const View1<V>& d) const {
+  Kokkos::deep_copy(d, V(0));
+  fem::add_helmholtz_volume_diagonal(el_, m_, d);
+  if (imp_.faces() > 0) fem::add_face_mass_diagonal(imp_, d);
+  if (constrained_.extent(0) > 0) fem::fill_constrained(constrained_, V(1), d);
+}
+
+// Instantiated in models/helmholtz/helmholtz.cpp (see helmholtz.hpp).
+extern template class HelmholtzOperator<double>;
+extern template class HelmholtzOperator<float>;
 
 }  // namespace polymech::helmholtz
