@@ -71,19 +71,15 @@ void apply_face_mass(const char* label, const HexFaces<T, V>& f, const View1<V>&
   const auto dofs = f.dofs;
   const auto w = f.weights;
   const auto coef = f.coefficient;
-  for (int c = 0; c < f.colors(); ++c) {
-    Kokkos::parallel_for(
-        label, Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index face) {
-          V u[N2], uq[Q2], tmp[Q * N];
-          gather<Constrained, N2>(dofs, face, x, u);
-          interpolate_2d<N, Q>(b.B, u, uq, tmp);
-          const V cf = coef(face);
-          for (int q = 0; q < Q2; ++q) uq[q] = (cf * w(face, q)) * uq[q];
-          integrate_2d<N, Q>(b.B, uq, u, tmp);
-          scatter_add<Constrained, N2>(dofs, face, u, y);
-        });
-  }
+  parallel_for_colors(label, f.color_offsets, KOKKOS_LAMBDA(const Index face) {
+    V u[N2], uq[Q2], tmp[Q * N];
+    gather<Constrained, N2>(dofs, face, x, u);
+    interpolate_2d<N, Q>(b.B, u, uq, tmp);
+    const V cf = coef(face);
+    for (int q = 0; q < Q2; ++q) uq[q] = (cf * w(face, q)) * uq[q];
+    integrate_2d<N, Q>(b.B, uq, u, tmp);
+    scatter_add<Constrained, N2>(dofs, face, u, y);
+  });
 }
 
 // out += c_f int M(s) M(t) w dGamma per face node: with M = B the load int N dGamma (eq. (20)), with
@@ -97,19 +93,15 @@ void integrate_face_weights(const char* label, const HexFaces<T, V>& f, const T 
   const auto dofs = f.dofs;
   const auto w = f.weights;
   const auto coef = f.coefficient;
-  for (int c = 0; c < f.colors(); ++c) {
-    Kokkos::parallel_for(
-        label, Kokkos::RangePolicy<ExecSpace>(f.color_offsets[c], f.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index face) {
-          T wq[Q2], v[N2], tmp[Q * N];
-          for (int q = 0; q < Q2; ++q) wq[q] = w(face, q);
-          integrate_2d<N, Q>(m.M, wq, v, tmp);
-          const V cf = coef(face);
-          V cv[N2];
-          for (int a = 0; a < N2; ++a) cv[a] = cf * v[a];
-          scatter_add<true, N2>(dofs, face, cv, out);
-        });
-  }
+  parallel_for_colors(label, f.color_offsets, KOKKOS_LAMBDA(const Index face) {
+    T wq[Q2], v[N2], tmp[Q * N];
+    for (int q = 0; q < Q2; ++q) wq[q] = w(face, q);
+    integrate_2d<N, Q>(m.M, wq, v, tmp);
+    const V cf = coef(face);
+    V cv[N2];
+    for (int a = 0; a < N2; ++a) cv[a] = cf * v[a];
+    scatter_add<true, N2>(dofs, face, cv, out);
+  });
 }
 
 template <class T, class V, int N>

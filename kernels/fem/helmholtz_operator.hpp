@@ -30,27 +30,23 @@ void apply_volume(const char* label, const HexElements<T>& el, T mass_coefficien
   const HexBasis<T, N, Q> b = make_hex_basis<T, N, Q>();
   const auto dofs = el.dofs;
   const auto geo = el.geometry;
-  for (int c = 0; c < el.colors(); ++c) {
-    Kokkos::parallel_for(
-        label, Kokkos::RangePolicy<ExecSpace>(el.color_offsets[c], el.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index e) {
-          V u[N3], uq[Q3], g0[Q3], g1[Q3], g2[Q3], t1[Q * Q * N], t2[Q * Q * N];
-          gather<Constrained, N3>(dofs, e, x, u);
-          interpolate<N, Q>(b.B, u, uq, t1, t2);
-          gradient_at_points<Q>(b.Dq, uq, g0, g1, g2);
-          const T* G = &geo(e, 0);
-          for (int q = 0; q < Q3; ++q) {
-            const V a0 = g0[q], a1 = g1[q], a2 = g2[q];
-            g0[q] = G[g00 * Q3 + q] * a0 + G[g01 * Q3 + q] * a1 + G[g02 * Q3 + q] * a2;
-            g1[q] = G[g01 * Q3 + q] * a0 + G[g11 * Q3 + q] * a1 + G[g12 * Q3 + q] * a2;
-            g2[q] = G[g02 * Q3 + q] * a0 + G[g12 * Q3 + q] * a1 + G[g22 * Q3 + q] * a2;
-            uq[q] = (mass_coefficient * G[wdetj * Q3 + q]) * uq[q];
-          }
-          gradient_transpose_add<Q>(b.Dq, g0, g1, g2, uq);
-          integrate<N, Q, false>(b.B, uq, u, t1, t2);
-          scatter_add<Constrained, N3>(dofs, e, u, y);
-        });
-  }
+  parallel_for_colors(label, el.color_offsets, KOKKOS_LAMBDA(const Index e) {
+    V u[N3], uq[Q3], g0[Q3], g1[Q3], g2[Q3], t1[Q * Q * N], t2[Q * Q * N];
+    gather<Constrained, N3>(dofs, e, x, u);
+    interpolate<N, Q>(b.B, u, uq, t1, t2);
+    gradient_at_points<Q>(b.Dq, uq, g0, g1, g2);
+    const T* G = &geo(e, 0);
+    for (int q = 0; q < Q3; ++q) {
+      const V a0 = g0[q], a1 = g1[q], a2 = g2[q];
+      g0[q] = G[g00 * Q3 + q] * a0 + G[g01 * Q3 + q] * a1 + G[g02 * Q3 + q] * a2;
+      g1[q] = G[g01 * Q3 + q] * a0 + G[g11 * Q3 + q] * a1 + G[g12 * Q3 + q] * a2;
+      g2[q] = G[g02 * Q3 + q] * a0 + G[g12 * Q3 + q] * a1 + G[g22 * Q3 + q] * a2;
+      uq[q] = (mass_coefficient * G[wdetj * Q3 + q]) * uq[q];
+    }
+    gradient_transpose_add<Q>(b.Dq, g0, g1, g2, uq);
+    integrate<N, Q, false>(b.B, uq, u, t1, t2);
+    scatter_add<Constrained, N3>(dofs, e, u, y);
+  });
 }
 
 // Diagonal of the element matrices by sum factorization of the squared 1D factors:
@@ -69,32 +65,28 @@ void add_volume_diagonal(const HexElements<T>& el, T mass_coefficient, const Vie
     }
   const auto dofs = el.dofs;
   const auto geo = el.geometry;
-  for (int c = 0; c < el.colors(); ++c) {
-    Kokkos::parallel_for(
-        "polymech::fem::helmholtz_diagonal", Kokkos::RangePolicy<ExecSpace>(el.color_offsets[c], el.color_offsets[c + 1]),
-        KOKKOS_LAMBDA(const Index e) {
-          T d[N3], f[Q3], t1[Q * Q * N], t2[Q * Q * N];
-          for (int a = 0; a < N3; ++a) d[a] = T(0);
-          const T* G = &geo(e, 0);
-          // one term: coefficient field f at the points, 1D factors X, Y, Z along x, y, z
-          auto term = [&](int component, T factor, const T(&X)[Q][N], const T(&Y)[Q][N], const T(&Z)[Q][N]) {
-            for (int q = 0; q < Q3; ++q) f[q] = factor * G[component * Q3 + q];
-            contract<2, Q, N, Q, Q, Q, true, false>(Z, f, t1);
-            contract<1, Q, N, Q, Q, N, true, false>(Y, t1, t2);
-            contract<0, Q, N, Q, N, N, true, true>(X, t2, d);
-          };
-          term(g00, T(1), s.DD, s.BB, s.BB);
-          term(g11, T(1), s.BB, s.DD, s.BB);
-          term(g22, T(1), s.BB, s.BB, s.DD);
-          term(g01, T(2), s.BD, s.BD, s.BB);
-          term(g02, T(2), s.BD, s.BB, s.BD);
-          term(g12, T(2), s.BB, s.BD, s.BD);
-          term(wdetj, mass_coefficient, s.BB, s.BB, s.BB);
-          V dv[N3];
-          for (int a = 0; a < N3; ++a) dv[a] = V(d[a]);
-          scatter_add<true, N3>(dofs, e, dv, diag);
-        });
-  }
+  parallel_for_colors("polymech::fem::helmholtz_diagonal", el.color_offsets, KOKKOS_LAMBDA(const Index e) {
+    T d[N3], f[Q3], t1[Q * Q * N], t2[Q * Q * N];
+    for (int a = 0; a < N3; ++a) d[a] = T(0);
+    const T* G = &geo(e, 0);
+    // one term: coefficient field f at the points, 1D factors X, Y, Z along x, y, z
+    auto term = [&](int component, T factor, const T(&X)[Q][N], const T(&Y)[Q][N], const T(&Z)[Q][N]) {
+      for (int q = 0; q < Q3; ++q) f[q] = factor * G[component * Q3 + q];
+      contract<2, Q, N, Q, Q, Q, true, false>(Z, f, t1);
+      contract<1, Q, N, Q, Q, N, true, false>(Y, t1, t2);
+      contract<0, Q, N, Q, N, N, true, true>(X, t2, d);
+    };
+    term(g00, T(1), s.DD, s.BB, s.BB);
+    term(g11, T(1), s.BB, s.DD, s.BB);
+    term(g22, T(1), s.BB, s.BB, s.DD);
+    term(g01, T(2), s.BD, s.BD, s.BB);
+    term(g02, T(2), s.BD, s.BB, s.BD);
+    term(g12, T(2), s.BB, s.BD, s.BD);
+    term(wdetj, mass_coefficient, s.BB, s.BB, s.BB);
+    V dv[N3];
+    for (int a = 0; a < N3; ++a) dv[a] = V(d[a]);
+    scatter_add<true, N3>(dofs, e, dv, diag);
+  });
 }
 
 }  // namespace detail

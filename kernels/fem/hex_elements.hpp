@@ -58,6 +58,14 @@ KOKKOS_FORCEINLINE_FUNCTION void scatter_add(const Map& map, Index i, const V* u
   }
 }
 
+// One launch per colour of items (elements or faces) grouped by colour: items [offsets[c], offsets[c+1])
+// share no DoF, so f can scatter-add without atomics.
+template <class F>
+void parallel_for_colors(const char* label, const std::vector<Index>& offsets, const F& f) {
+  for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
+    Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(offsets[c], offsets[c + 1]), f);
+}
+
 // Geometric factors stored per quadrature point q of an element: the symmetric
 // G = w det(J) J^-1 J^-T (6 values) and w det(J), so that
 //   (A_e)_ab = sum_q grad_ref(phi_a)^T G grad_ref(phi_b),  (M_e)_ab = sum_q w det(J) phi_a phi_b.
