@@ -30,7 +30,7 @@ void apply_volume(const char* label, const HexElements<T>& el, T mass_coefficien
   const HexBasis<T, N, Q> b = make_hex_basis<T, N, Q>();
   const auto dofs = el.dofs;
   const auto geo = el.geometry;
-  parallel_for_colors(label, el.color_offsets, KOKKOS_LAMBDA(const Index e) {
+  parallel_for_colors(label, el, KOKKOS_LAMBDA(const Index e) {
     V u[N3], uq[Q3], g0[Q3], g1[Q3], g2[Q3], t1[Q * Q * N], t2[Q * Q * N];
     gather<Constrained, N3>(dofs, e, x, u);
     interpolate<N, Q>(b.B, u, uq, t1, t2);
@@ -65,7 +65,7 @@ void add_volume_diagonal(const HexElements<T>& el, T mass_coefficient, const Vie
     }
   const auto dofs = el.dofs;
   const auto geo = el.geometry;
-  parallel_for_colors("polymech::fem::helmholtz_diagonal", el.color_offsets, KOKKOS_LAMBDA(const Index e) {
+  parallel_for_colors("polymech::fem::helmholtz_diagonal", el, KOKKOS_LAMBDA(const Index e) {
     T d[N3], f[Q3], t1[Q * Q * N], t2[Q * Q * N];
     for (int a = 0; a < N3; ++a) d[a] = T(0);
     const T* G = &geo(e, 0);

@@ -10,8 +10,11 @@
 // xi, j along eta, k along zeta). A DoF under a strong Dirichlet condition is stored as -1 - d, so the
 // constrained operator skips it with a sign test and the unconstrained one decodes it.
 //
-// Elements are stored grouped by colour: elements of one colour share no DoF, so each colour is one
-// parallel launch that scatter-adds without atomics, and results do not depend on the thread count.
+// Elements are stored in chunks (runs of neighbouring elements), the chunks grouped by colour: chunks
+// of one colour share no DoF, so each colour is one parallel launch over its chunks that scatter-adds
+// without atomics, and results do not depend on the thread count. A thread works through a chunk's
+// elements in order, which keeps the DoFs they share in cache (on the host a chunk is ~8000 nodes; on
+// a GPU, one element).
 #pragma once
 
 #include <cstdint>
@@ -75,15 +78,29 @@ template <class T>
 struct HexElements {
   int order = 1;
   Index owned = 0, ghost = 0;  // DoF layout of this part
-  Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace> dofs;  // [elements][N^3], colour-sorted
+  Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace> dofs;  // [elements][N^3], storage order
   Kokkos::View<T**, Kokkos::LayoutRight, MemSpace> geometry;  // [elements][7 Q^3], component-major
-  std::vector<Index> color_offsets;  // host: colour c is elements [offsets[c], offsets[c + 1])
+  Kokkos::View<Index*, MemSpace> chunk_offsets;  // chunk k is elements [chunk_offsets(k), chunk_offsets(k + 1))
+  std::vector<Index> color_offsets;  // host: colour c is chunks [color_offsets[c], color_offsets[c + 1])
 
   int nodes_1d() const { return order + 1; }
   Index elements() const { return static_cast<Index>(dofs.extent(0)); }
   Index local_size() const { return owned + ghost; }
   int colors() const { return static_cast<int>(color_offsets.size()) - 1; }
 };
+
+// One launch per colour of the element chunks; f(e) runs for every element, a chunk's elements in order
+// by one thread.
+template <class T, class F>
+void parallel_for_colors(const char* label, const HexElements<T>& el, const F& f) {
+  const auto chunks = el.chunk_offsets;
+  for (std::size_t c = 0; c + 1 < el.color_offsets.size(); ++c)
+    Kokkos::parallel_for(
+        label, Kokkos::RangePolicy<ExecSpace>(el.color_offsets[c], el.color_offsets[c + 1]),
+        KOKKOS_LAMBDA(const Index k) {
+          for (Index e = chunks(k); e < chunks(k + 1); ++e) f(e);
+        });
+}
 
 // Calls f(std::integral_constant<int, N>{}) with N = order + 1 for order 1..4.
 template <class F>

@@ -60,6 +60,7 @@ struct Config {
   std::vector<BoundaryCondition> boundaries;  // boundaries not listed are rigid
   AnalyticSpec analytic;
   bool jacobi = true;  // Jacobi preconditioning of COCG
+  int chunk_elements = 0;  // elements per chunk of the scatter colouring; 0: automatic (host ~8000 nodes, device 1)
   solvers::SolverOptions solver;
   EffectSet effects;
 

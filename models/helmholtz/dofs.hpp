@@ -53,7 +53,44 @@ inline std::vector<int> face_local_nodes(int n1d, int f) {
   return out;
 }
 
-inline HexDofs number_dofs(const HexMesh& m, int order) {
+// Elements in an order that keeps neighbours close: sorted by the Morton (Z-order) code of their
+// centroids on a 2^10 grid over the mesh's bounding box. Chunks of consecutive elements in this order
+// are compact blobs, and DoFs numbered in it are close in memory.
+inline std::vector<std::int64_t> locality_order(const HexMesh& m) {
+  const std::int64_t ne = m.element_count();
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::int64_t v = 0; v < m.vertex_count(); ++v)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], m.vertices[3 * v + k]);
+      hi[k] = std::max(hi[k], m.vertices[3 * v + k]);
+    }
+  auto spread = [](std::uint64_t x) {  // 10 bits -> every third bit of 30
+    x &= 0x3ff;
+    x = (x | (x << 16)) & 0x030000ff;
+    x = (x | (x << 8)) & 0x0300f00f;
+    x = (x | (x << 4)) & 0x030c30c3;
+    x = (x | (x << 2)) & 0x09249249;
+    return x;
+  };
+  std::vector<std::pair<std::uint64_t, std::int64_t>> keys(static_cast<std::size_t>(ne));
+  for (std::int64_t e = 0; e < ne; ++e) {
+    std::uint64_t code = 0;
+    for (int k = 0; k < 3; ++k) {
+      double c = 0;
+      for (int v = 0; v < 8; ++v) c += m.vertices[3 * m.hexes[8 * e + v] + k] / 8.0;
+      const double t = hi[k] > lo[k] ? (c - lo[k]) / (hi[k] - lo[k]) : 0.0;
+      code |= spread(static_cast<std::uint64_t>(std::min(1023.0, std::max(0.0, t * 1024.0)))) << k;
+    }
+    keys[e] = {code, e};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::int64_t> order(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+  return order;
+}
+
+// `traversal`: the element order in which DoFs are numbered (empty: the mesh's order).
+inline HexDofs number_dofs(const HexMesh& m, int order, const std::vector<std::int64_t>& traversal = {}) {
   if (order < fem::min_order || order > fem::max_order)
     throw std::invalid_argument("order " + std::to_string(order) + " is not supported; allowed: 1..4");
   HexDofs d;
@@ -88,7 +125,8 @@ inline HexDofs number_dofs(const HexMesh& m, int order) {
     for (int k = 0; k < 3; ++k) d.coordinates.push_back(x[k]);
     return static_cast<std::int32_t>(next++);
   };
-  for (std::int64_t e = 0; e < ne; ++e) {
+  for (std::int64_t t = 0; t < ne; ++t) {
+    const std::int64_t e = traversal.empty() ? t : traversal[t];
     const std::int64_t* verts = &m.hexes[8 * e];
     for (int k = 0; k < N; ++k)
       for (int j = 0; j < N; ++j)
@@ -132,21 +170,23 @@ inline HexDofs number_dofs(const HexMesh& m, int order) {
 
 // Greedy colouring of items (elements or faces) given their vertices: items sharing a vertex get
 // different colours, so they share no DoF. Returns one colour per item; colours are 0..max.
-inline std::vector<int> color_by_shared_vertices(const std::vector<std::int64_t>& item_vertices, int per_item,
+// Items with any number of vertices each: item i has item_vertices[item_offsets[i] .. item_offsets[i + 1]).
+inline std::vector<int> color_by_shared_vertices(const std::vector<std::int64_t>& item_offsets,
+                                                 const std::vector<std::int64_t>& item_vertices,
                                                  std::int64_t vertex_count) {
-  const std::int64_t n = static_cast<std::int64_t>(item_vertices.size()) / per_item;
+  const std::int64_t n = static_cast<std::int64_t>(item_offsets.size()) - 1;
   std::vector<std::int64_t> offsets(static_cast<std::size_t>(vertex_count + 1), 0), items;
   for (auto v : item_vertices) ++offsets[v + 1];
   for (std::int64_t v = 0; v < vertex_count; ++v) offsets[v + 1] += offsets[v];
   items.resize(item_vertices.size());
   std::vector<std::int64_t> fill(offsets.begin(), offsets.end() - 1);
   for (std::int64_t e = 0; e < n; ++e)
-    for (int c = 0; c < per_item; ++c) items[fill[item_vertices[e * per_item + c]]++] = e;
+    for (std::int64_t c = item_offsets[e]; c < item_offsets[e + 1]; ++c) items[fill[item_vertices[c]]++] = e;
   std::vector<int> color(static_cast<std::size_t>(n), -1);
   std::vector<std::int64_t> seen;  // seen[c] == e + 1: colour c is used by a neighbour of e
   for (std::int64_t e = 0; e < n; ++e) {
-    for (int c = 0; c < per_item; ++c) {
-      const std::int64_t v = item_vertices[e * per_item + c];
+    for (std::int64_t c = item_offsets[e]; c < item_offsets[e + 1]; ++c) {
+      const std::int64_t v = item_vertices[c];
       for (std::int64_t k = offsets[v]; k < offsets[v + 1]; ++k) {
         const int col = color[items[k]];
         if (col < 0) continue;
@@ -159,6 +199,13 @@ inline std::vector<int> color_by_shared_vertices(const std::vector<std::int64_t>
     color[e] = col;
   }
   return color;
+}
+
+inline std::vector<int> color_by_shared_vertices(const std::vector<std::int64_t>& item_vertices, int per_item,
+                                                 std::int64_t vertex_count) {
+  std::vector<std::int64_t> offsets(item_vertices.size() / per_item + 1);
+  for (std::size_t i = 0; i < offsets.size(); ++i) offsets[i] = static_cast<std::int64_t>(i) * per_item;
+  return color_by_shared_vertices(offsets, item_vertices, vertex_count);
 }
 
 // Order of items sorted by colour (stable) and the colour offsets.
