@@ -9,6 +9,7 @@
 #include <map>
 #include <regex>
 
+#include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "io/scene.hpp"
@@ -190,6 +191,7 @@ TEST(Scenes, EveryShippedSceneLoads) {
   const std::map<std::string, std::function<void(const fs::path&)>> loaders = {
       {"mps_elastic", [](const fs::path& p) { io::load_mps_elastic_scene(p); }},
       {"nosb_pd", [](const fs::path& p) { io::load_nosb_pd_scene(p); }},
+      {"helmholtz", [](const fs::path& p) { io::load_helmholtz_scene(p); }},
   };
   int count = 0;
   for (const auto& e : fs::recursive_directory_iterator(source_dir() / "scenes")) {

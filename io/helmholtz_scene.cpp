@@ -1,0 +1,234 @@
+#include "io/helmholtz_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "helmholtz/helmholtz.hpp"
+#include "io/gmsh_msh.hpp"
+#include "io/mps_elastic_scene.hpp"
+
+namespace polymech::io {
+
+namespace hz = polymech::helmholtz;
+
+namespace {
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s.empty() ? "(none)" : s;
+}
+
+// Three numbers in a range.
+std::array<double, 3> triple(const SceneTable& t, const std::string& key, Range range) {
+  const auto v = t.reals(key, range);
+  if (v.size() != 3) t.fail(key, "must have 3 entries (x, y, z), got " + std::to_string(v.size()));
+  return {v[0], v[1], v[2]};
+}
+
+hz::BoundaryKind kind_of(const std::string& s) {
+  if (s == "dirichlet") return hz::BoundaryKind::dirichlet;
+  if (s == "impedance") return hz::BoundaryKind::impedance;
+  if (s == "vibrating") return hz::BoundaryKind::vibrating;
+  return hz::BoundaryKind::rigid;
+}
+
+}  // namespace
+
+HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const HelmholtzSceneOptions& options) {
+  const Scene scene = Scene::load(file);
+  const SceneTable root = scene.root();
+  HelmholtzScene out;
+  out.file = file;
+  out.title = root.string("title", file.stem().string());
+  hz::Config& c = out.config;
+
+  // [model]
+  const SceneTable model = root.table("model");
+  model.choice("kind", {"helmholtz"});
+  const auto effects = model.strings("effects", {});
+  try {
+    c.effects = EffectSet::resolve(effects, hz::Helmholtz<double>::effects());
+  } catch (const EffectError& e) {
+    model.fail("effects", std::string("is invalid: ") + e.what());
+  }
+  out.precision = model.choice("precision", {"double", "float"}, "double");
+  if (!options.precision.empty()) {
+    if (options.precision != "double" && options.precision != "float")
+      throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
+    out.precision = options.precision;
+  }
+
+  // [discretization]
+  const SceneTable disc = root.table("discretization");
+  c.order = static_cast<int>(disc.integer("order", fem::min_order, fem::max_order));
+  disc.finish();
+  if (options.order != 0) {
+    if (options.order < fem::min_order || options.order > fem::max_order)
+      throw SceneError(file.string() + ": order " + std::to_string(options.order) +
+                       " is not supported; allowed: 1..4");
+    c.order = options.order;
+  }
+
+  // [mesh]
+  const SceneTable mesh = root.table("mesh");
+  const std::string mesh_kind = mesh.choice("kind", {"box", "gmsh"});
+  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
+  std::string preset = "paper";  // without [accuracy]: the element counts as written
+  const auto acc = root.optional_table("accuracy");
+  if (acc) {
+    if (mesh_kind == "gmsh") acc->fail_table("accuracy presets scale box meshes; a Gmsh mesh is used as it is");
+    preset = acc->choice("default", accuracy_presets(), preset);
+    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
+    acc->finish();
+  }
+  if (mesh_kind == "box") {
+    if (!options.accuracy.empty()) {
+      if (!factors.count(options.accuracy))
+        throw SceneError(file.string() + ": accuracy '" + options.accuracy + "' is unknown; allowed: " +
+                         join(accuracy_presets()));
+      preset = options.accuracy;
+    }
+    out.accuracy = preset;
+    out.coarsening = options.coarsening > 0 ? options.coarsening : factors.at(preset);
+    hz::BoxSpec box;
+    box.lengths = triple(mesh, "lengths", positive());
+    if (mesh.has("origin")) box.origin = triple(mesh, "origin", Range{});
+    const auto n = triple(mesh, "elements", at_least(1.0));
+    for (int d = 0; d < 3; ++d) {
+      if (n[d] != std::floor(n[d]) || n[d] > 1e5)
+        mesh.fail("elements", "must be whole numbers in [1, 100000], got " + format_number(n[d]));
+      box.elements[d] = options.elements[d] > 0 ? options.elements[d]
+                                                : std::max(1, static_cast<int>(std::lround(n[d] / out.coarsening)));
+      out.box_elements[d] = box.elements[d];
+    }
+    box.perturbation = mesh.real("perturbation", 0.0, between(0.0, 1.0));
+    box.seed = static_cast<std::uint32_t>(mesh.integer("seed", 1, 0, 1 << 30));
+    c.mesh = hz::make_box_mesh(box);
+    for (std::int64_t e = 0; e < c.mesh.element_count(); ++e) {
+      const double r = hz::min_corner_jacobian_ratio(c.mesh, e);
+      if (!(r > 0))
+        mesh.fail("perturbation", "= " + format_number(box.perturbation) + " inverts element " + std::to_string(e) +
+                                      " (det J at a corner / mean = " + format_number(r) +
+                                      "); allowed: a perturbation that keeps every element valid (about < 0.4)");
+    }
+    out.mesh_source = "box " + std::to_string(box.elements[0]) + " x " + std::to_string(box.elements[1]) + " x " +
+                      std::to_string(box.elements[2]);
+  } else {
+    if (!options.accuracy.empty())
+      throw SceneError(file.string() + ": accuracy '" + options.accuracy +
+                       "' cannot be applied: presets scale box meshes and this scene reads a Gmsh mesh");
+    if (options.coarsening > 0 || options.elements[0] > 0)
+      throw SceneError(file.string() + ": a Gmsh mesh cannot be coarsened or refined here");
+    out.accuracy = "mesh file";
+    const std::string name = mesh.string("file");
+    std::filesystem::path path = name;
+    if (path.is_relative()) path = file.parent_path() / path;
+    if (!std::filesystem::exists(path))
+      mesh.fail("file", "= \"" + name + "\": no such file (looked for " + path.string() + ")");
+    try {
+      c.mesh = read_gmsh_hex_mesh(path);
+    } catch (const MeshError& e) {
+      mesh.fail("file", "= \"" + name + "\" cannot be used: " + e.what());
+    }
+    out.mesh_source = path.string();
+  }
+  mesh.finish();
+
+  // [acoustics]
+  const SceneTable ac = root.table("acoustics");
+  c.sound_speed = ac.real("sound_speed", positive());
+  c.frequency = ac.real("frequency", positive());
+  c.density = ac.real("density", positive());
+  ac.finish();
+  if (options.frequency > 0) c.frequency = options.frequency;
+
+  // [[boundary]]
+  std::vector<std::string> used_names;
+  std::vector<std::string> kinds_used;
+  for (const auto& b : root.tables("boundary")) {
+    const auto names = b.strings("names", {});
+    if (names.empty()) b.fail("names", "is missing or empty; it is required (mesh boundaries: " + join(c.mesh.boundary_names) + ")");
+    const std::string kind = b.choice("kind", {"rigid", "dirichlet", "impedance", "vibrating"});
+    hz::BoundaryCondition bc;
+    bc.kind = kind_of(kind);
+    if (bc.kind == hz::BoundaryKind::impedance) bc.impedance = b.real("impedance", positive());
+    if (bc.kind == hz::BoundaryKind::vibrating) bc.velocity = b.real("velocity", Range{});
+    const bool has_value = bc.kind == hz::BoundaryKind::dirichlet && b.has("value");
+    if (has_value) bc.value = b.real("value", Range{});
+    if (bc.kind != hz::BoundaryKind::rigid && !c.effects.has(kind))
+      b.fail("kind", "= \"" + kind + "\" needs effect '" + kind + "' in model.effects (listed: " +
+                         join(std::vector<std::string>(c.effects.names().begin(), c.effects.names().end())) + ")");
+    for (const auto& n : names) {
+      if (c.mesh.boundary_index(n) < 0)
+        b.fail("names", "names boundary '" + n + "', which the mesh does not have; mesh boundaries: " +
+                            join(c.mesh.boundary_names));
+      if (std::find(used_names.begin(), used_names.end(), n) != used_names.end())
+        b.fail("names", "names boundary '" + n + "' a second time; each boundary takes one condition");
+      used_names.push_back(n);
+      bc.name = n;
+      c.boundaries.push_back(bc);
+    }
+    kinds_used.push_back(kind);
+    b.finish();
+    if (bc.kind == hz::BoundaryKind::dirichlet && !has_value && !root.has("analytic"))
+      b.fail("kind", "= \"dirichlet\" needs 'value' (there is no [analytic] field to take the values from)");
+  }
+  for (const auto& e : c.effects.names())
+    if (std::find(kinds_used.begin(), kinds_used.end(), e) == kinds_used.end())
+      model.fail("effects", "lists effect '" + e + "' but no [[boundary]] has kind = \"" + e +
+                                "\"; a scene lists only the effects its boundaries need");
+  model.finish();
+
+  // [analytic]
+  if (auto an = root.optional_table("analytic")) {
+    const std::string kind = an->choice("kind", {"none", "plane_cosines", "duct"});
+    c.analytic.kind = kind == "plane_cosines" ? hz::AnalyticKind::plane_cosines
+                      : kind == "duct"        ? hz::AnalyticKind::duct
+                                              : hz::AnalyticKind::none;
+    if (c.analytic.kind == hz::AnalyticKind::duct) {
+      double lo = 1e300, hi = -1e300;
+      for (std::int64_t v = 0; v < c.mesh.vertex_count(); ++v) {
+        lo = std::min(lo, c.mesh.vertices[3 * v]);
+        hi = std::max(hi, c.mesh.vertices[3 * v]);
+      }
+      double v0 = 0.0, zn = 0.0;
+      for (const auto& b : c.boundaries) {
+        if (b.kind == hz::BoundaryKind::vibrating) v0 = b.velocity;
+        if (b.kind == hz::BoundaryKind::impedance) zn = b.impedance;
+      }
+      c.analytic.x0 = an->real("x0", lo, Range{});
+      c.analytic.length = an->real("length", hi - lo, positive());
+      c.analytic.velocity = an->real("velocity", v0, Range{});
+      c.analytic.impedance = an->real("impedance", zn > 0 ? zn : 1.0, positive());
+    }
+    an->finish();
+  }
+
+  // [solver]
+  if (auto s = root.optional_table("solver")) {
+    s->choice("method", {"cocg"}, "cocg");
+    c.jacobi = s->choice("preconditioner", {"jacobi", "none"}, "jacobi") == "jacobi";
+    c.solver.tolerance = s->real("tolerance", 1e-10, Range{0.0, 1.0, true, true});
+    c.solver.max_iterations = static_cast<int>(s->integer("max_iterations", 10000, 1, 10000000));
+    c.solver.stagnation_window = static_cast<int>(s->integer("stagnation_window", 1000, 1, 10000000));
+    c.solver.max_restarts = static_cast<int>(s->integer("max_restarts", 3, 0, 100));
+    s->finish();
+  }
+
+  // [output]
+  if (auto o = root.optional_table("output")) {
+    out.write_field = o->boolean("field", true);
+    if (o->has("profile_from") || o->has("profile_to")) {
+      out.profile_from = triple(*o, "profile_from", Range{});
+      out.profile_to = triple(*o, "profile_to", Range{});
+      out.has_profile = true;
+    }
+    o->finish();
+  }
+  root.finish();
+  return out;
+}
+
+}  // namespace polymech::io

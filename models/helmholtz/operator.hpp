@@ -1,0 +1,80 @@
+// The system matrix of seed 002 paper 3 eq. (16), K = A - k^2 M + j rho omega C, as a matrix-free
+// operator for the solvers (kernels/solvers/krylov.hpp): volume terms by sum factorization, impedance
+// faces, identity rows on Dirichlet DoFs. Complex symmetric: K^T = K.
+#pragma once
+
+#include "fem/boundary_faces.hpp"
+#include "fem/dirichlet.hpp"
+#include "fem/helmholtz_operator.hpp"
+
+namespace polymech::helmholtz {
+
+template <class T>
+class HelmholtzOperator {
+ public:
+  using value_type = Kokkos::complex<T>;
+  using V = value_type;
+
+  HelmholtzOperator() = default;
+  HelmholtzOperator(fem::HexElements<T> elements, fem::HexFaces<T, V> impedance, View1<Index> constrained,
+                    T mass_coefficient)
+      : el_(std::move(elements)), imp_(std::move(impedance)), constrained_(constrained), m_(mass_coefficient) {}
+
+  Index local_size() const { return el_.local_size(); }
+  Index owned_size() const { return el_.owned; }
+
+  // y = K x on the free DoFs, y = x on the constrained ones. A distributed version would update the
+  // ghost entries of x here (halo exchange) and add the ghost rows of y to their owners afterwards.
+  void apply(const View1<V>& x, const View1<V>& y) const;
+
+  // y = K x with every DoF free (the Dirichlet lifting K g).
+  void apply_unconstrained(const View1<V>& x, const View1<V>& y) const;
+
+  // d = diag(K) without forming K (1 on constrained rows).
+  void diagonal(const View1<V>& d) const;
+
+  const fem::HexElements<T>& elements() const { return el_; }
+  const fem::HexFaces<T, V>& impedance_faces() const { return imp_; }
+  T mass_coefficient() const { return m_; }
+
+  // Bytes the operator keeps (element map, geometric factors, faces, constraint list).
+  std::size_t bytes() const {
+    return el_.dofs.span() * sizeof(Index) + el_.geometry.span() * sizeof(T) + imp_.dofs.span() * sizeof(Index) +
+           imp_.weights.span() * sizeof(T) + imp_.coefficient.span() * sizeof(V) + constrained_.span() * sizeof(Index);
+  }
+
+ private:
+  fem::HexElements<T> el_;
+  fem::HexFaces<T, V> imp_;
+  View1<Index> constrained_;
+  T m_ = T(0);
+};
+
+template <class T>
+void HelmholtzOperator<T>::apply(const View1<V>& x, const View1<V>& y) const {
+  Kokkos::deep_copy(y, V(0));
+  fem::apply_helmholtz_volume(el_, m_, x, y);
+  if (imp_.faces() > 0) fem::apply_face_mass(imp_, x, y);
+  if (constrained_.extent(0) > 0) fem::copy_constrained_rows(constrained_, x, y);
+}
+
+template <class T>
+void HelmholtzOperator<T>::apply_unconstrained(const View1<V>& x, const View1<V>& y) const {
+  Kokkos::deep_copy(y, V(0));
+  fem::apply_helmholtz_volume_unconstrained(el_, m_, x, y);
+  if (imp_.faces() > 0) fem::apply_face_mass_unconstrained(imp_, x, y);
+}
+
+template <class T>
+void HelmholtzOperator<T>::diagonal(const View1<V>& d) const {
+  Kokkos::deep_copy(d, V(0));
+  fem::add_helmholtz_volume_diagonal(el_, m_, d);
+  if (imp_.faces() > 0) fem::add_face_mass_diagonal(imp_, d);
+  if (constrained_.extent(0) > 0) fem::fill_constrained(constrained_, V(1), d);
+}
+
+// Instantiated in models/helmholtz/helmholtz.cpp (see helmholtz.hpp).
+extern template class HelmholtzOperator<double>;
+extern template class HelmholtzOperator<float>;
+
+}  // namespace polymech::helmholtz

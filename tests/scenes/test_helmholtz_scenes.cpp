@@ -1,0 +1,174 @@
+// Helmholtz scenes: the shipped ones load (tests/scenes/test_scenes.cpp), the Gmsh duct solves to the
+// analytic pressure, and every bad scene stops with one message naming the file, the line, the key and
+// what is allowed (including errors inside the .msh file the scene names).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "helmholtz/helmholtz.hpp"
+#include "io/helmholtz_scene.hpp"
+#include "support/error_messages.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+namespace hz = polymech::helmholtz;
+
+namespace {
+
+fs::path source_dir() {
+  const char* d = std::getenv("POLYMECH_SOURCE_DIR");
+  return fs::absolute(d ? fs::path(d) : fs::path("."));
+}
+
+// A small valid duct scene; tests edit one line of it.
+const char* kBase = R"(title = "test duct"
+[model]
+kind = "helmholtz"
+effects = ["vibrating", "impedance"]
+
+[discretization]
+order = 2
+
+[mesh]
+kind = "box"
+lengths = [1.0, 0.2, 0.1]
+elements = [10, 2, 1]
+
+[acoustics]
+sound_speed = 343.0
+frequency = 500.0
+density = 1.3
+
+[[boundary]]
+names = ["xmin"]
+kind = "vibrating"
+velocity = 0.014
+
+[[boundary]]
+names = ["xmax"]
+kind = "impedance"
+impedance = 445.9
+
+[analytic]
+kind = "duct"
+)";
+
+using polymech::testing::replace_once;
+
+// Loads `text` as scene.toml (with mesh.msh next to it if given) and checks the error.
+void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments,
+                  const std::string& mesh_text = "", const io::HelmholtzSceneOptions& options = {}) {
+  polymech::testing::TempDir dir;
+  if (!mesh_text.empty()) dir.write("mesh.msh", mesh_text);
+  std::string msg;
+  try {
+    io::load_helmholtz_scene(dir.write("scene.toml", text), options);
+  } catch (const io::SceneError& e) {
+    msg = e.what();
+  }
+  polymech::testing::expect_message(msg, "scene.toml", line, fragments);
+}
+
+}  // namespace
+
+TEST(HelmholtzScenes, BaseSceneLoads) {
+  polymech::testing::TempDir dir;
+  const auto s = io::load_helmholtz_scene(dir.write("scene.toml", kBase));
+  EXPECT_EQ(s.config.order, 2);
+  EXPECT_EQ(s.config.mesh.element_count(), 20);
+  EXPECT_EQ(s.config.boundaries.size(), 2u);
+  EXPECT_TRUE(s.config.effects.has("impedance"));
+  EXPECT_EQ(s.config.analytic.kind, hz::AnalyticKind::duct);
+  EXPECT_DOUBLE_EQ(s.config.analytic.velocity, 0.014);
+  EXPECT_DOUBLE_EQ(s.config.analytic.impedance, 445.9);
+  EXPECT_DOUBLE_EQ(s.config.analytic.length, 1.0);
+  EXPECT_EQ(s.accuracy, "paper");  // no [accuracy]: the counts as written
+}
+
+TEST(HelmholtzScenes, OrderOutOfRange) {
+  expect_error(replace_once(kBase, "order = 2", "order = 0"), 7,
+               {"key 'discretization.order' = 0 is out of range", "an integer in [1, 4]"});
+  expect_error(replace_once(kBase, "order = 2", "order = 7"), 7, {"= 7 is out of range", "[1, 4]"});
+  io::HelmholtzSceneOptions o;
+  o.order = 5;
+  expect_error(kBase, -1, {"order 5 is not supported; allowed: 1..4"}, "", o);
+}
+
+TEST(HelmholtzScenes, BadMeshSizes) {
+  expect_error(replace_once(kBase, "lengths = [1.0, 0.2, 0.1]", "lengths = [-1.0, 0.2, 0.1]"), 11,
+               {"key 'mesh.lengths'", "-1", "must be > 0"});
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2.5, 1]"), 12,
+               {"key 'mesh.elements'", "whole numbers"});
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2]"), 12, {"must have 3 entries"});
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2, 1]\nperturbation = 0.9"), 13,
+               {"key 'mesh.perturbation' = 0.9 inverts element", "allowed: a perturbation that keeps every element valid"});
+}
+
+TEST(HelmholtzScenes, EffectsAndBoundariesMustAgree) {
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "gravity"])"),
+               4, {"key 'model.effects'", "unknown effect 'gravity'", "allowed: dirichlet, impedance, vibrating"});
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating"])"), 26,
+               {"key 'boundary[1].kind' = \"impedance\" needs effect 'impedance' in model.effects"});
+  expect_error(replace_once(kBase, R"(effects = ["vibrating", "impedance"])", R"(effects = ["vibrating", "impedance", "dirichlet"])"),
+               4, {"lists effect 'dirichlet' but no [[boundary]] has kind = \"dirichlet\""});
+}
+
+TEST(HelmholtzScenes, BoundaryNamesAndValues) {
+  expect_error(replace_once(kBase, R"(names = ["xmax"])", R"(names = ["outlet"])"), 25,
+               {"key 'boundary[1].names' names boundary 'outlet', which the mesh does not have",
+                "xmin, xmax, ymin, ymax, zmin, zmax"});
+  expect_error(replace_once(kBase, R"(names = ["xmax"])", R"(names = ["xmin"])"), 25, {"a second time"});
+  expect_error(replace_once(kBase, "impedance = 445.9", "impedance = -1.0"), 27,
+               {"key 'boundary[1].impedance' = -1 is out of range: must be > 0"});
+  expect_error(replace_once(kBase, "impedance = 445.9\n", ""), 24, {"key 'boundary[1].impedance' is missing"});
+  expect_error(replace_once(kBase, "velocity = 0.014", "velocity = 0.014\nimpedance = 3.0"), 23,
+               {"unknown key 'boundary[0].impedance'", "kind, names, velocity"});
+  expect_error(replace_once(kBase, R"(kind = "vibrating")", R"(kind = "absorbing")"), 21,
+               {"key 'boundary[0].kind' = \"absorbing\"", R"("rigid", "dirichlet", "impedance", "vibrating")"});
+}
+
+TEST(HelmholtzScenes, UnknownKeysAndMissingTables) {
+  expect_error(replace_once(kBase, "density = 1.3", "density = 1.3\nspeed = 3.0"), 18,
+               {"unknown key 'acoustics.speed'", "density, frequency, sound_speed"});
+  expect_error(replace_once(kBase, "[acoustics]\n", "[acoustic]\n"), 1, {"[acoustics] is missing"});
+  expect_error(replace_once(kBase, "frequency = 500.0", "frequency = -500.0"), 16,
+               {"key 'acoustics.frequency' = -500", "must be > 0"});
+}
+
+TEST(HelmholtzScenes, GmshMeshErrorsNameBothFiles) {
+  const std::string gmsh = replace_once(replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
+                                           "kind = \"gmsh\"\nfile = \"mesh.msh\""),
+                                   "[analytic]", "[accuracy]\ndefault = \"draft\"\n\n[analytic]");
+  expect_error(gmsh, 28, {"accuracy presets scale box meshes"});
+  const std::string plain = replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
+                                    "kind = \"gmsh\"\nfile = \"mesh.msh\"");
+  expect_error(plain, 11, {"key 'mesh.file' = \"mesh.msh\": no such file"});
+  expect_error(plain, 11, {"key 'mesh.file' = \"mesh.msh\" cannot be used", "mesh.msh:2: MSH version 2.2 is not supported"},
+               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
+  io::HelmholtzSceneOptions o;
+  o.accuracy = "draft";
+  expect_error(plain, -1, {"presets scale box meshes and this scene reads a Gmsh mesh"},
+               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n", o);
+}
+
+// The shipped unstructured Gmsh duct (coarsest mesh, order 2) against eq. (29).
+TEST(HelmholtzScenes, GmshDuctSolvesToTheAnalyticPressure) {
+  const fs::path scene = source_dir() / "scenes/helmholtz/duct_gmsh.toml";
+  std::ifstream in(scene);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  text = replace_once(text, "meshes/duct_lc050.msh", (source_dir() / "scenes/helmholtz/meshes/duct_lc100.msh").string());
+  polymech::testing::TempDir dir;
+  io::HelmholtzSceneOptions o;
+  o.order = 2;
+  const auto s = io::load_helmholtz_scene(dir.write("scene.toml", text), o);
+  EXPECT_EQ(s.config.mesh.element_count(), 23);
+  hz::Helmholtz<double> model(s.config);
+  const auto r = model.solve();
+  EXPECT_TRUE(r.converged()) << r.reason;
+  EXPECT_LT(model.l2_error().relative(), 1e-2);  // 4.9e-3 on 23 unstructured hexahedra
+}
