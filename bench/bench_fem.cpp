@@ -86,8 +86,15 @@ struct Assembled {
   std::unique_ptr<hz::Helmholtz<double>> model;
   pm::fem::CsrMatrix<Kokkos::complex<double>> csr;
 };
+// The cache holds Kokkos views: it is emptied by a finalize hook, before Kokkos::finalize frees the
+// memory spaces (a static map's destructor would run after it and abort the benchmark at exit).
 Assembled& assembled(int p, int n) {
   static std::map<std::pair<int, int>, Assembled> cache;
+  static const bool hooked = [] {
+    Kokkos::push_finalize_hook([] { cache.clear(); });
+    return true;
+  }();
+  (void)hooked;
   auto& a = cache[{p, n}];
   if (!a.model) {
     a.model = std::make_unique<hz::Helmholtz<double>>(cube(p, n));

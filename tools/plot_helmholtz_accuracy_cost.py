@@ -6,7 +6,8 @@
 For each case: L2 error (eq. (28)) against wall time (set-up + solve) and against DoFs, one line per
 order p = 1..4, double (filled markers) and float (open markers); the grey staircase is the Pareto
 front over all runs. Writes <csv>.png next to each CSV, and answers "for a target error, which order
-is cheapest?" in <csv>_cheapest.md (the fastest run reaching each target, per precision).
+is cheapest?" in <csv>_cheapest.md: the fastest run reaching each target, per precision, and the
+cost of each order (double) to reach each target (or its best error where it never does).
 --cpu measures cost in process CPU time instead of wall time (on a shared machine wall time includes
 the time other jobs held the cores; with one thread CPU time is the run's own time).
 """
@@ -57,6 +58,31 @@ def cheapest_table(col, case):
     return "\n".join(lines) + "\n"
 
 
+PER_ORDER_TARGETS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6]
+
+
+def per_order_table(col, case):
+    """Double precision: for each target, the cheapest run of every order p that reaches it."""
+    unit = TIME.replace("_seconds", "")
+    lines = [f"### {case}: cost of each order to reach a target L2 error (double; {unit} [s] / DoFs)", "",
+             "| target | p = 1 | p = 2 | p = 3 | p = 4 |", "| --- | --- | --- | --- | --- |"]
+    for target in PER_ORDER_TARGETS:
+        cells = []
+        for p in (1, 2, 3, 4):
+            sel = np.where((col["is_float"] == 0.0) & (col["order"] == p))[0]
+            ok = sel[col["l2_error"][sel] <= target]
+            if ok.size:
+                i = ok[np.argmin(col[TIME][ok])]
+                cells.append(f"{col[TIME][i]:.3g} s / {int(col['dofs'][i])}")
+            elif sel.size:
+                i = sel[np.argmin(col["l2_error"][sel])]
+                cells.append(f"not reached (best {col['l2_error'][i]:.1e} at {int(col['dofs'][i])})")
+            else:
+                cells.append("")
+        lines.append(f"| {target:.0e} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def plot(path):
     col = load_csv(path)
     case = os.path.basename(path).replace("helmholtz_", "").replace(".csv", "")
@@ -88,7 +114,7 @@ def plot(path):
     fig.savefig(out, dpi=110)
     md = os.path.splitext(path)[0] + "_cheapest.md"
     with open(md, "w") as f:
-        f.write(cheapest_table(col, case))
+        f.write(cheapest_table(col, case) + "\n" + per_order_table(col, case))
     print(f"plot: {out}\ntable: {md}")
 
 
