@@ -269,7 +269,15 @@ class NosbPd {
   // Largest stable step of velocity Verlet for this discretisation, from a patch of the same layout,
   // spacing, horizon, material, weights and hourglass force: 2 / omega with omega^2 the patch's largest
   // eigenvalue plus the projectile penalty k / m and the short-range springs, and the velocity
-  // viscosity's rate limit dt <= 1 / (2 c_v omega_v). Needs no model of the full size.
+  // viscosity's rate limit dt <= 1 / (4 c_v omega_v). Needs no model of the full size.
+  //
+  // The velocity viscosity (seed 003 eq. (3)) is a damping operator on the half-step velocities,
+  // which velocity Verlet advances like forward Euler: stable while dt lambda <= 2 for its largest
+  // rate lambda. For a velocity pattern with neighbour mean vbar = w v, eq. (3) gives
+  // L^ZE = sum_j W (t_i - t_j) = -2 c_v omega_v rho (1 - w)^2 v, so lambda = 2 c_v omega_v (1 - w)^2,
+  // largest (8 c_v omega_v) for w = -1: two particles whose only intact bond joins them (fragments,
+  // a damaged rim). Intact lattices reach w ~ -0.3 only, which is why 1 / (2 c_v omega_v) sufficed
+  // until bonds broke.
   static double stable_time_step(const Config& c) {
     Config patch = c;
     std::vector<std::string> pe;
@@ -293,7 +301,7 @@ class NosbPd {
                 (c.contact.short_range_distance * c.spacing * c.material.density);
     double dt = 2.0 / std::sqrt(omega2);
     if (c.effects.has("velocity_viscosity") && c.stabilization.omega_v > 0 && c.stabilization.c_v > 0)
-      dt = std::min(dt, 1.0 / (2.0 * c.stabilization.c_v * c.stabilization.omega_v));
+      dt = std::min(dt, 1.0 / (4.0 * c.stabilization.c_v * c.stabilization.omega_v));
     return dt;
   }
   double stable_dt() {
