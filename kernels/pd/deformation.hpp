@@ -100,7 +100,8 @@ void deformation_gradient_pass(const neighbors::BondFamily& family, const Fields
             ++intact;
           }
           const bool ok = intact > D && detail::shape_quality(K) > min_quality;
-          f.status(i) = ok ? std::uint8_t(status_shape_known) : std::uint8_t(status_shape_known | status_failed);
+          const bool crushed = f.status(i) & status_crushed;  // sticky (pd/stress.hpp)
+          f.status(i) = std::uint8_t(status_shape_known | (ok && !crushed ? 0 : status_failed) | (crushed ? status_crushed : 0));
           kinv = ok ? inverse(K) : Mat<T, D>::zero();
           store_mat<D>(f.kinv, i, kinv);
         }

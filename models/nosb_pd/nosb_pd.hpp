@@ -127,7 +127,7 @@ class NosbPd {
   // Accelerations at the current displacements and velocities (forces of one step, without moving).
   void compute_forces() {
     pd::deformation_gradient(family_, f_, deformation_params_);
-    if (plastic_) pd::stress_johnson_cook(f_, elastic_, jc_, static_cast<T>(cfg_.dt > 0 ? cfg_.dt : 1e-9));
+    if (plastic_) pd::stress_johnson_cook(f_, elastic_, jc_, static_cast<T>(cfg_.dt > 0 ? cfg_.dt : 1e-9), crush_);
     else pd::stress_elastic(f_, elastic_);
     if (viscosity_) pd::velocity_viscosity_state(f_, viscosity_params_);
     auto fp = force_params_;
@@ -358,6 +358,7 @@ class NosbPd {
     jc_.T_melt = static_cast<T>(m.melting_temperature);
     jc_.rho_cp = static_cast<T>(m.density * m.specific_heat);
     jc_.chi = static_cast<T>(m.taylor_quinney);
+    if (damage_) crush_.j_min = static_cast<T>(c.damage.crush_volume_ratio);
     pd::BondWeight<T> w;
     w.delta2 = static_cast<T>(delta * delta);
     w.beta = static_cast<T>(beta_);
@@ -515,6 +516,7 @@ class NosbPd {
   neighbors::BondFamily family_;
   pd::ElasticConstants<T> elastic_;
   pd::JohnsonCook<T> jc_;
+  pd::CrushLimits<T> crush_;
   pd::BondWeight<T> weight_;
   pd::DeformationParams<T> deformation_params_;
   pd::ForceParams<T> force_params_;
