@@ -165,6 +165,8 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
       c.damage.criterion = np::DamageCriterion::energy_release_rate;
       c.damage.energy_release_rate = dmg->real("energy_release_rate", positive());
     }
+    // J2 law: particles whose det F leaves [r, 1/r] fail for good; 0 switches it off
+    c.damage.crush_volume_ratio = dmg->real("crush_volume_ratio", 0.5, Range{0.0, 1.0, false, true});
     dmg->finish();
   }
 

@@ -89,7 +89,8 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
   j["initial_velocity"] = v0;
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
-  j["perforated"] = impact.perforated;
+  j["perforated"] = impact.perforated;  // through and free of contact
+  j["through"] = impact.through;        // nose more than a horizon below the plate (a plug may ride on it)
   j["diverged"] = stats.diverged;
   j["experiment_residual_velocity"] = num(vexp);
   j["residual_velocity_error"] = num(stats.diverged ? NAN : impact.residual_velocity - vexp);
@@ -97,6 +98,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   j["bonds"] = model.bonds();
   j["broken_bonds"] = model.broken_bonds();
   j["wall_seconds"] = stats.wall_seconds;
+  j["short_range_list_builds"] = model.verlet_builds();  // neighbour searches of the contact list (skin)
   j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["spacing"] = c.spacing;
   j["horizon_ratio"] = c.horizon_ratio;
@@ -125,7 +127,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   pm::io::write_json(opt.out / "summary.json", j);
 
   std::printf("v0 = %.1f m/s -> residual %.1f m/s (%s)%s\n", v0, impact.residual_velocity,
-              impact.perforated ? "perforated" : "not through at the end of the run",
+              impact.perforated ? "perforated" : (impact.through ? "through, plug on the nose" : "not through at the end of the run"),
               std::isfinite(vexp) ? (", experiment " + std::to_string(vexp).substr(0, 5) + " m/s").c_str() : "");
   std::printf("plate: core damage %.2f, rim damage %.2f, plug %.1f g (nominal %.1f g); energy error %.2e; wall %.1f s\n",
               impact.core_damage, impact.rim_damage, 1e3 * impact.plug_mass, 1e3 * impact.plug_mass_nominal, stats.energy_error(),

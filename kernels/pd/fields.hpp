@@ -27,6 +27,7 @@ using SymView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
 enum StatusBits : std::uint8_t {
   status_failed = 1,       // too few intact bonds for an invertible shape tensor: carries no stress
   status_shape_known = 2,  // kinv holds K^-1 of the current intact family
+  status_crushed = 4,      // F left the admissible volume range (inverted or blown up): failed for good
 };
 
 // Constraint bits (Fields::constraint): bit k set = velocity component k is prescribed.

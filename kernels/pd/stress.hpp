@@ -23,11 +23,23 @@ void stress_elastic(const Fields<T, D>& f, const ElasticConstants<T>& c) {
       });
 }
 
+// A particle whose volume ratio J = det F leaves [j_min, 1 / j_min] is crushed: in a metal, whose
+// plastic flow keeps the volume, such a J only comes from a family torn apart or collapsed onto itself
+// (zero-energy modes, a few intact bonds after damage). There the hypoelastic pressure grows without
+// bound and P = J sigma F^-T changes sign when F inverts, which creates energy; the particle is failed
+// for good (no stress, its stored energy released) and is kept apart by the short-range contact.
+template <class T>
+struct CrushLimits {
+  T j_min = T(0);  // 0: never
+};
+
 // Kernel "polymech::pd::stress_johnson_cook": J2 with Johnson-Cook hardening over a step dt. The
 // velocity gradient is L = dF/dt F_mid^-1 with F_mid = F - dt/2 dF/dt, the midpoint of the step
 // (F is linear in the displacements, so F_n+1 - F_n = dt dF/dt(v_n+1/2) exactly on a fixed family).
 template <class T, int D>
-void stress_johnson_cook(const Fields<T, D>& f, const ElasticConstants<T>& c, const JohnsonCook<T>& jc, T dt) {
+void stress_johnson_cook(const Fields<T, D>& f, const ElasticConstants<T>& c, const JohnsonCook<T>& jc, T dt,
+                         CrushLimits<T> crush = {}) {
+  const T j_min = crush.j_min, j_max = crush.j_min > T(0) ? T(1) / crush.j_min : T(0);
   Kokkos::parallel_for(
       "polymech::pd::stress_johnson_cook", range(static_cast<std::int64_t>(f.x0.extent(0))),
       KOKKOS_LAMBDA(const std::int64_t i) {
@@ -36,6 +48,15 @@ void stress_johnson_cook(const Fields<T, D>& f, const ElasticConstants<T>& c, co
           return;
         }
         const Mat3<T> F = embed3<T, D>(load_mat<D>(f.F, i));
+        if (j_min > T(0)) {
+          const T J = det(F);
+          if (!(J > j_min && J < j_max)) {
+            f.status(i) |= std::uint8_t(status_failed | status_crushed);
+            store_sym(f.sigma, i, Mat3<T>::zero());
+            store_mat<D>(f.A, i, Mat<T, D>::zero());
+            return;
+          }
+        }
         Mat3<T> Fdot = embed3<T, D>(load_mat<D>(f.Fdot, i));
         if constexpr (D == 2) Fdot.a[2][2] = T(0);  // plane strain: F33 = 1 at all times
         const Mat3<T> L = Fdot * inverse(F - (T(0.5) * dt) * Fdot);

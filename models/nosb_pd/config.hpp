@@ -68,6 +68,9 @@ struct Damage {
   // this (1 for a full or half-space family, 0 when the bonds lie in a plane), carries no stress:
   // F would be undetermined along the missing directions.
   double min_shape_quality = 0.2;
+  // J2 law with damage: a particle whose J = det F leaves [crush_volume_ratio, 1 / crush_volume_ratio]
+  // fails for good (pd::CrushLimits; plastic flow keeps the volume, such a J is a torn family).
+  double crush_volume_ratio = 0.5;
 };
 
 struct Stabilization {

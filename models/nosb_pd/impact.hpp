@@ -17,7 +17,9 @@
 namespace polymech::nosb_pd {
 
 struct ImpactState {
-  bool perforated = false;
+  bool perforated = false;          // through and free (no contact force left)
+  bool through = false;             // nose more than a horizon below the bottom face, still moving down
+                                    // (the plug may ride on the nose: in contact, yet through the plate)
   double residual_velocity = 0.0;  // projectile speed along the impact direction [m/s]
   double core_damage = 0.0, rim_damage = 0.0;
   double plug_mass = 0.0, plug_mass_nominal = 0.0;  // [kg]; nominal: rho pi R_p^2 H (3D)
@@ -42,6 +44,8 @@ ImpactState analyse_impact(const NosbPd<T, D>& m) {
   const auto& p = m.projectile();
   s.residual_velocity = -p.velocity[D - 1];
   s.perforated = projectile_free(m);
+  const double nose = p.position[D - 1] - (c.projectile.shape == ProjectileShape::sphere ? c.projectile.radius : 0.0);
+  s.through = nose < -c.geometry.thickness - c.horizon() && s.residual_velocity > 0;
   const HostFields h = m.host_fields();
   const double Rp = c.projectile.radius, rho = c.material.density;
   double core = 0, rim = 0;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "io/nosb_pd_scene.hpp"
@@ -27,6 +28,10 @@ np::Config reduced(bool velocity_viscosity) {
   auto scene = pm::io::load_nosb_pd_scene(scene_file());
   np::Config c = scene.config;
   c.clamp_radius = 0.016;
+  // c_v = 0.3 rather than the scene's 6.0: at this coarse resolution c_v = 6 stops the projectile
+  // (docs/VALIDATION.md); the test is about plugging vs collapse and the energy balance, not about c_v
+  c.stabilization.c_v = 0.3;
+  c.dt = c.dt_safety * np::NosbPd<double, 3>::stable_time_step(c);
   c.geometry.radius = c.clamp_radius + c.horizon();
   if (!velocity_viscosity) {
     std::vector<std::string> e;
@@ -61,6 +66,8 @@ TEST(PdPenetration, VelocityViscosityGivesPerforationByPluggingWithBalancedEnerg
   const auto& e = stats.samples.back().energy;
   EXPECT_GT(e.plastic, 0.1 * stats.initial_energy) << "plastic work in the plugging zone";
   EXPECT_LT(e.viscous, 0.0) << "velocity viscosity dissipates";
+  std::printf("[penetration] c_v = 0.3: residual %.1f m/s, core damage %.2f, rim damage %.2f, energy error %.3f\n",
+              s.residual_velocity, s.core_damage, s.rim_damage, stats.energy_error());
 }
 
 TEST(PdPenetration, WithoutZeroEnergyControlTheImpactZoneCollapses) {
@@ -68,18 +75,13 @@ TEST(PdPenetration, WithoutZeroEnergyControlTheImpactZoneCollapses) {
   ASSERT_FALSE(m.config().effects.has("velocity_viscosity"));
   np::RunHooks hooks;
   hooks.sample_every = 10;
-  double e0 = 0;
-  hooks.stop = [&] {  // no need to follow the blow-up further
-    const double e = m.energy().total();
-    if (e0 == 0) e0 = e;
-    return !std::isfinite(e) || e > 2 * e0;
-  };
   const auto stats = np::run(m, static_cast<std::int64_t>(std::ceil(90e-6 / m.dt())), hooks);
+  ASSERT_TRUE(stats.finite);
   const auto s = np::analyse_impact(m);
-  // the run blows up (the energy doubles while the projectile is in the plate) and takes the core
-  // under the projectile with it (Fig. 5); followed to the end the whole impact zone is destroyed
-  // (core and rim damage 1.0 in the full-size run, docs/VALIDATION.md)
-  EXPECT_TRUE(!stats.finite || stats.energy_error() > 0.5) << "energy error " << stats.energy_error();
-  EXPECT_LT(m.time(), 90e-6) << "it diverged before the controlled run was through";
+  std::printf("[penetration] without control: residual %.1f m/s, core damage %.2f, rim damage %.2f, energy error %.3f\n",
+              s.residual_velocity, s.core_damage, s.rim_damage, stats.energy_error());
+  // Fig. 5: the material under the projectile is destroyed (the controlled run keeps its core, < 0.6,
+  // and fails at the rim); crushed particles fail, so the energy stays balanced (pd::CrushLimits)
   EXPECT_GT(s.core_damage, 0.6) << "core " << s.core_damage;
+  EXPECT_LT(stats.energy_error(), 0.15);
 }

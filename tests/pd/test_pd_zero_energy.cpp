@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <tuple>
 
 #include "nosb_pd/patch_stiffness.hpp"
 #include "pd_test_support.hpp"
@@ -77,11 +79,16 @@ TEST(PdZeroEnergy, PeriodicPatchHasSpuriousZeroEigenvaluesWithoutControlAndNoneW
     const auto hg = spectrum<2>(m, 6, {"hourglass"}, false);
     EXPECT_EQ(hg.zero_modes, hg.rigid_modes) << "m = " << m << ": only the translations are left";
     EXPECT_GT(hg.smallest_nonzero, 1e-4);
+    std::printf("[zero-energy] 2D m = %g: spurious zero eigenvalues %d without control, %d with hourglass "
+                "(smallest non-zero %.3g)\n", m, none.zero_modes - none.rigid_modes, hg.zero_modes - hg.rigid_modes,
+                hg.smallest_nonzero);
   }
   const auto none3 = spectrum<3>(2.0, 4, {}, false);
   EXPECT_GE(none3.zero_modes - none3.rigid_modes, 9) << "3D: 3 components x 3 parity patterns at least";
   const auto hg3 = spectrum<3>(2.0, 4, {"hourglass"}, false);
   EXPECT_EQ(hg3.zero_modes, hg3.rigid_modes);
+  std::printf("[zero-energy] 3D m = 2: spurious zero eigenvalues %d without control, %d with hourglass\n",
+              none3.zero_modes - none3.rigid_modes, hg3.zero_modes - hg3.rigid_modes);
 }
 
 TEST(PdZeroEnergy, VelocityViscosityDampsEveryZeroEnergyMode) {
@@ -90,6 +97,8 @@ TEST(PdZeroEnergy, VelocityViscosityDampsEveryZeroEnergyMode) {
   ASSERT_FALSE(vv.spurious_damping.empty()) << "velocity viscosity adds no stiffness: the zero modes stay";
   // rate of the damping on the weakest-damped spurious mode, against c_v 2 omega_v of eq. (3)
   EXPECT_GT(vv.spurious_damping.front(), 0.1 * 0.3 * 2 * 1e6);
+  std::printf("[zero-energy] velocity viscosity: %zu spurious modes, weakest damping rate %.3g 1/s (c_v 2 omega_v = %.3g)\n",
+              vv.spurious_damping.size(), vv.spurious_damping.front(), 0.3 * 2 * 1e6);
 }
 
 TEST(PdZeroEnergy, LoadedBlockRingsInSpuriousModesWithoutControl) {
@@ -108,4 +117,10 @@ TEST(PdZeroEnergy, LoadedBlockRingsInSpuriousModesWithoutControl) {
   const double hg_mean = std::accumulate(hg.amplitude.begin(), hg.amplitude.end(), 0.0) / hg.amplitude.size();
   const double none_mean = std::accumulate(none.amplitude.begin(), none.amplitude.end(), 0.0) / none.amplitude.size();
   EXPECT_LT(hg_mean, 0.3 * none_mean);
+  const double vv_mean = std::accumulate(vv.amplitude.begin(), vv.amplitude.end(), 0.0) / vv.amplitude.size();
+  for (const auto& [name, r, mean] : {std::tuple{"none", none, none_mean}, std::tuple{"velocity_viscosity", vv, vv_mean},
+                                      std::tuple{"hourglass", hg, hg_mean}})
+    std::printf("[zero-energy] ringing block, %s: non-affine share %.3f, amplitude mean %.3g fluctuation %.3f, "
+                "kinetic energy late / early %.3f\n", name, r.ratio, mean, fluctuation(r.amplitude),
+                r.kinetic_late / r.kinetic_early);
 }
