@@ -74,24 +74,16 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
   // [mesh]
   const SceneTable mesh = root.table("mesh");
   const std::string mesh_kind = mesh.choice("kind", {"box", "gmsh"});
-  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
-  std::string preset = "paper";  // without [accuracy]: the element counts as written
-  const auto acc = root.optional_table("accuracy");
-  if (acc) {
-    if (mesh_kind == "gmsh") acc->fail_table("accuracy presets scale box meshes; a Gmsh mesh is used as it is");
-    preset = acc->choice("default", accuracy_presets(), preset);
-    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
-    acc->finish();
+  if (mesh_kind == "gmsh") {
+    if (const auto acc = root.optional_table("accuracy"))
+      acc->fail_table("accuracy presets scale box meshes; a Gmsh mesh is used as it is");
+  } else {
+    // without [accuracy]: the element counts as written
+    const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening, "paper");
+    out.accuracy = accuracy.preset;
+    out.coarsening = accuracy.coarsening;
   }
   if (mesh_kind == "box") {
-    if (!options.accuracy.empty()) {
-      if (!factors.count(options.accuracy))
-        throw SceneError(file.string() + ": accuracy '" + options.accuracy + "' is unknown; allowed: " +
-                         join(accuracy_presets()));
-      preset = options.accuracy;
-    }
-    out.accuracy = preset;
-    out.coarsening = options.coarsening > 0 ? options.coarsening : factors.at(preset);
     hz::BoxSpec box;
     box.lengths = triple(mesh, "lengths", positive());
     if (mesh.has("origin")) box.origin = triple(mesh, "origin", Range{});

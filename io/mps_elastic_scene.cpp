@@ -91,23 +91,9 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   model.finish();
 
   // [accuracy]: preset name -> spacing factor
-  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
-  std::string preset = "draft";
-  if (auto acc = root.optional_table("accuracy")) {
-    preset = acc->choice("default", accuracy_presets(), preset);
-    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
-    acc->finish();
-  }
-  if (!options.accuracy.empty()) {
-    if (!factors.count(options.accuracy)) {
-      std::string allowed;
-      for (const auto& n : accuracy_presets()) allowed += (allowed.empty() ? "" : ", ") + n;
-      throw SceneError(file.string() + ": accuracy '" + options.accuracy + "' is unknown; allowed: " + allowed);
-    }
-    preset = options.accuracy;
-  }
-  out.accuracy = preset;
-  out.coarsening = options.coarsening > 0 ? options.coarsening : factors.at(preset);
+  const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
+  out.accuracy = accuracy.preset;
+  out.coarsening = accuracy.coarsening;
   if (!options.precision.empty()) {
     if (options.precision != "double" && options.precision != "float")
       throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
@@ -125,7 +111,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   c.number_density = nd == "mean" ? me::NumberDensityReference::mean : me::NumberDensityReference::interior;
   c.spacing = spacing * f;
   if (c.spacing > c.width || c.spacing > c.height)
-    domain.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + preset +
+    domain.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + out.accuracy +
                                "') is larger than the domain (" + format_number(c.width) + " x " +
                                format_number(c.height) + " m); allowed: 0 < spacing <= min(width, height) / " +
                                format_number(f));
@@ -161,7 +147,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     c.excitation.width = ex->real("width", 0.0, between(0.0, c.width));
     if (c.excitation.period < 4.0 * c.dt)
       ex->fail("period", "= " + format_number(c.excitation.period) + " s is shorter than 4 time steps (dt = " +
-                             format_number(c.dt) + " s at accuracy '" + preset + "'); the pulse would not be resolved");
+                             format_number(c.dt) + " s at accuracy '" + out.accuracy + "'); the pulse would not be resolved");
     ex->finish();
   } else {
     c.excitation.kind = me::ExcitationKind::none;
@@ -183,7 +169,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     k.contact_radius = cr->real("contact_radius", 1.0001, between(1.0, 3.0));
     if (k.length < c.spacing)
       cr->fail("length", "= " + format_number(k.length) + " m is shorter than the spacing " + format_number(c.spacing) +
-                             " m at accuracy '" + preset + "': the crack would cut no bond; allowed: length >= spacing");
+                             " m at accuracy '" + out.accuracy + "': the crack would cut no bond; allowed: length >= spacing");
     if (c.effects.has("crack_contact.slip") && !c.effects.has("crack_contact.open_close") &&
         !(k.normal_reaction > 0) && !(out.normal_reaction_ratio > 0))
       cr->fail("normal_reaction", "is needed by effect crack_contact.slip without crack_contact.open_close (nothing "
@@ -251,7 +237,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   out.stable_dt = me::MpsElastic<double>::stable_time_step(c);
   if (c.dt > out.stable_dt)
     time.fail("dt", "= " + format_number(dt) + " s (x " + format_number(f) + " = " + format_number(c.dt) +
-                        " s at accuracy '" + preset + "') is above the stability limit " + format_number(out.stable_dt) +
+                        " s at accuracy '" + out.accuracy + "') is above the stability limit " + format_number(out.stable_dt) +
                         " s of spacing " + format_number(c.spacing) + " m; allowed: 0 < dt <= " +
                         format_number(out.stable_dt / f) + " s");
   return out;

@@ -18,11 +18,6 @@
 
 namespace polymech::io {
 
-inline const std::vector<std::string>& accuracy_presets() {
-  static const std::vector<std::string> names = {"draft", "standard", "paper"};
-  return names;
-}
-
 struct MpsElasticScene {
   std::filesystem::path file;
   std::string title;

@@ -12,11 +12,6 @@ namespace np = polymech::nosb_pd;
 
 namespace {
 
-const std::vector<std::string>& pd_accuracy_presets() {
-  static const std::vector<std::string> names = {"draft", "standard", "paper"};
-  return names;
-}
-
 template <class E>
 E pick(const SceneTable& t, const std::string& key, const std::vector<std::pair<std::string, E>>& options,
        const std::string& fallback = "") {
@@ -99,20 +94,9 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   model.finish();
 
   // [accuracy]: preset name -> spacing factor
-  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
-  std::string preset = "draft";
-  if (auto acc = root.optional_table("accuracy")) {
-    preset = acc->choice("default", pd_accuracy_presets(), preset);
-    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
-    acc->finish();
-  }
-  if (!options.accuracy.empty()) {
-    if (!factors.count(options.accuracy))
-      throw SceneError(file.string() + ": accuracy '" + options.accuracy + "' is unknown; allowed: draft, standard, paper");
-    preset = options.accuracy;
-  }
-  out.accuracy = preset;
-  out.coarsening = options.coarsening > 0 ? options.coarsening : factors.at(preset);
+  const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
+  out.accuracy = accuracy.preset;
+  out.coarsening = accuracy.coarsening;
   if (!options.precision.empty()) {
     if (options.precision != "double" && options.precision != "float")
       throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
@@ -141,7 +125,7 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
                             : g.shape == np::Shape::disc ? std::min(g.thickness, g.radius)
                                                          : std::min(g.length, g.radius);
     if (c.spacing > smallest)
-      disc.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + preset +
+      disc.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + out.accuracy +
                                "') is larger than the body (smallest dimension " + format_number(smallest) +
                                " m); allowed: 0 < spacing <= " + format_number(smallest / f) + " m");
     if (g.layout == np::Layout::cylindrical && (c.dimension != 3 || g.shape == np::Shape::box))
@@ -253,7 +237,7 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   out.stable_dt = c.dimension == 3 ? np::NosbPd<double, 3>::stable_time_step(c) : np::NosbPd<double, 2>::stable_time_step(c);
   if (dt > 0 && dt > out.stable_dt)
     time.fail("dt", "= " + format_number(dt / f) + " s (x " + format_number(f) + " = " + format_number(dt) + " s at accuracy '" +
-                        preset + "') is above the stability limit " + format_number(out.stable_dt) + " s of spacing " +
+                        out.accuracy + "') is above the stability limit " + format_number(out.stable_dt) + " s of spacing " +
                         format_number(c.spacing) + " m; allowed: 0 (automatic) or 0 < dt <= " + format_number(out.stable_dt / f) + " s");
   c.dt = dt > 0 ? dt : c.dt_safety * out.stable_dt;
   return out;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 namespace polymech::io {
@@ -287,5 +288,32 @@ Scene Scene::load(const std::filesystem::path& file) {
 SceneTable Scene::root() const { return SceneTable(doc_, &doc_->root, ""); }
 
 const std::filesystem::path& Scene::file() const { return doc_->file; }
+
+const std::vector<std::string>& accuracy_presets() {
+  static const std::vector<std::string> names = {"draft", "standard", "paper"};
+  return names;
+}
+
+AccuracyChoice read_accuracy(const SceneTable& root, const std::string& requested, double requested_coarsening,
+                             const std::string& default_preset) {
+  std::map<std::string, double> factors = {{"draft", 4.0}, {"standard", 2.0}, {"paper", 1.0}};
+  AccuracyChoice out;
+  out.preset = default_preset;
+  if (auto acc = root.optional_table("accuracy")) {
+    out.preset = acc->choice("default", accuracy_presets(), out.preset);
+    for (auto& [name, f] : factors) f = acc->real(name, f, between(1.0, 64.0));
+    acc->finish();
+  }
+  if (!requested.empty()) {
+    if (!factors.count(requested)) {
+      std::string allowed;
+      for (const auto& n : accuracy_presets()) allowed += (allowed.empty() ? "" : ", ") + n;
+      throw SceneError(root.file().string() + ": accuracy '" + requested + "' is unknown; allowed: " + allowed);
+    }
+    out.preset = requested;
+  }
+  out.coarsening = requested_coarsening > 0 ? requested_coarsening : factors.at(out.preset);
+  return out;
+}
 
 }  // namespace polymech::io

@@ -105,4 +105,18 @@ class Scene {
 // "%.6g" of a number, the form error messages print values in.
 std::string format_number(double x);
 
+// Accuracy presets shared by every scene kind: [accuracy] names the default preset and may change the
+// spacing factor of each (draft x4, standard x2, paper x1 by default, each in [1, 64]).
+const std::vector<std::string>& accuracy_presets();
+
+struct AccuracyChoice {
+  std::string preset;       // the preset in effect
+  double coarsening = 1.0;  // spacing factor relative to the paper's
+};
+
+// Reads the optional [accuracy] table of `root`; `requested` (a command-line preset, "" = the scene's
+// default) and `requested_coarsening` (> 0: an explicit factor, e.g. from a sweep) override it.
+AccuracyChoice read_accuracy(const SceneTable& root, const std::string& requested, double requested_coarsening,
+                             const std::string& default_preset = "draft");
+
 }  // namespace polymech::io

@@ -8,6 +8,7 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/kokkos_shim.hpp"
 #include "io/output.hpp"
@@ -41,6 +42,19 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
   app.add_option("--threads", o.threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--quiet", o.quiet, "no progress lines");
+}
+
+// The keys every summary.json starts with: the case, its scene file and title, and what it ran with.
+template <class SceneT, class EffectsT>
+nlohmann::json summary_header(const std::string& name, const SceneT& scene, const EffectsT& effects) {
+  nlohmann::json j;
+  j["case"] = name;
+  j["scene"] = scene.file.string();
+  j["title"] = scene.title;
+  j["accuracy"] = scene.accuracy;
+  j["precision"] = scene.precision;
+  j["effects"] = std::vector<std::string>(effects.names().begin(), effects.names().end());
+  return j;
 }
 
 // Kokkos for the lifetime of an app.

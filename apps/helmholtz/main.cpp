@@ -135,14 +135,8 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
     files.push_back("profile.csv");
   }
 
-  nlohmann::json j;
-  j["case"] = "helmholtz";
-  j["scene"] = scene.file.string();
-  j["title"] = scene.title;
-  j["accuracy"] = scene.accuracy;
-  j["precision"] = scene.precision;
+  nlohmann::json j = pm::apps::summary_header("helmholtz", scene, c.effects);
   j["mesh"] = scene.mesh_source;
-  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
   j["order"] = c.order;
   j["h"] = h;
   j["elements"] = model.element_count();

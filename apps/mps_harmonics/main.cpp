@@ -96,13 +96,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
                       {b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
   const auto xdmf = scene.snapshot_every > 0 ? snapshots.finish().filename().string() : std::string();
 
-  nlohmann::json j;
-  j["case"] = "mps_harmonics";
-  j["scene"] = scene.file.string();
-  j["title"] = scene.title;
-  j["accuracy"] = scene.accuracy;
-  j["precision"] = scene.precision;
-  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
+  nlohmann::json j = pm::apps::summary_header("mps_harmonics", scene, c.effects);
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["steps"] = c.steps;

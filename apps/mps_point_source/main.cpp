@@ -77,13 +77,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
 
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   const double cp_a = model.cp_analytic(), cs_a = model.cs_analytic();
-  nlohmann::json j;
-  j["case"] = "mps_point_source";
-  j["scene"] = scene.file.string();
-  j["title"] = scene.title;
-  j["accuracy"] = scene.accuracy;
-  j["precision"] = scene.precision;
-  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
+  nlohmann::json j = pm::apps::summary_header("mps_point_source", scene, c.effects);
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["stable_dt"] = scene.stable_dt;

@@ -79,14 +79,8 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
 
   const double v0 = c.projectile.velocity, vexp = experiment_residual(v0);
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json j;
-  j["case"] = "pd_penetration";
-  j["scene"] = scene.file.string();
-  j["title"] = scene.title;
+  nlohmann::json j = pm::apps::summary_header("pd_penetration", scene, c.effects);
   j["command"] = argv0;
-  j["accuracy"] = scene.accuracy;
-  j["precision"] = scene.precision;
-  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
   j["initial_velocity"] = v0;
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
   j["perforated"] = impact.perforated;  // through and free of contact

@@ -33,13 +33,7 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
   std::fprintf(stderr, "[pd_tension] %s\n  accuracy %s (spacing %.3g m, m = %g), %s, %d particles, %lld bonds, dt %.3g s\n",
                scene.title.c_str(), scene.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.precision.c_str(), model.particles(),
                static_cast<long long>(model.bonds()), c.dt);
-  nlohmann::json j;
-  j["case"] = "pd_tension";
-  j["scene"] = scene.file.string();
-  j["title"] = scene.title;
-  j["accuracy"] = scene.accuracy;
-  j["precision"] = scene.precision;
-  j["effects"] = std::vector<std::string>(c.effects.names().begin(), c.effects.names().end());
+  nlohmann::json j = pm::apps::summary_header("pd_tension", scene, c.effects);
   j["spacing"] = c.spacing;
   j["horizon_ratio"] = c.horizon_ratio;
   j["particles"] = model.particles();
