@@ -6,7 +6,7 @@
 
 #include "helmholtz/helmholtz.hpp"
 #include "io/gmsh_msh.hpp"
-#include "io/mps_elastic_scene.hpp"
+#include "io/model_table.hpp"
 
 namespace polymech::io {
 
@@ -47,18 +47,8 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
   // [model]
   const SceneTable model = root.table("model");
   model.choice("kind", {"helmholtz"});
-  const auto effects = model.strings("effects", {});
-  try {
-    c.effects = EffectSet::resolve(effects, hz::Helmholtz<double>::effects());
-  } catch (const EffectError& e) {
-    model.fail("effects", std::string("is invalid: ") + e.what());
-  }
-  out.precision = model.choice("precision", {"double", "float"}, "double");
-  if (!options.precision.empty()) {
-    if (options.precision != "double" && options.precision != "float")
-      throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
-    out.precision = options.precision;
-  }
+  c.effects = read_effects(model, hz::Helmholtz<double>::effects());
+  out.precision = read_precision(model, options.precision);
 
   // [discretization]
   const SceneTable disc = root.table("discretization");

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "contact/crack_geometry.hpp"
+#include "io/model_table.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 
 namespace polymech::io {
@@ -81,24 +82,14 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   // [model]
   const SceneTable model = root.table("model");
   model.choice("kind", {"mps_elastic"});
-  const auto effects = model.strings("effects", {});
-  try {
-    c.effects = EffectSet::resolve(effects, me::MpsElastic<double>::effects());
-  } catch (const EffectError& e) {
-    model.fail("effects", std::string("is invalid: ") + e.what());
-  }
-  out.precision = model.choice("precision", {"double", "float"}, "double");
+  c.effects = read_effects(model, me::MpsElastic<double>::effects());
+  out.precision = read_precision(model, options.precision);
   model.finish();
 
   // [accuracy]: preset name -> spacing factor
   const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
   out.accuracy = accuracy.preset;
   out.coarsening = accuracy.coarsening;
-  if (!options.precision.empty()) {
-    if (options.precision != "double" && options.precision != "float")
-      throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
-    out.precision = options.precision;
-  }
   const double f = out.coarsening;
 
   // [domain]

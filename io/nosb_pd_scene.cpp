@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "io/model_table.hpp"
 #include "nosb_pd/nosb_pd.hpp"
 
 namespace polymech::io {
@@ -84,24 +85,14 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   const SceneTable model = root.table("model");
   model.choice("kind", {"nosb_pd"});
   c.dimension = static_cast<int>(model.integer("dimension", 3, 2, 3));
-  const auto effects = model.strings("effects", {});
-  try {
-    c.effects = EffectSet::resolve(effects, np::NosbPd<double, 3>::effects());
-  } catch (const EffectError& e) {
-    model.fail("effects", std::string("is invalid: ") + e.what());
-  }
-  out.precision = model.choice("precision", {"double", "float"}, "double");
+  c.effects = read_effects(model, np::NosbPd<double, 3>::effects());
+  out.precision = read_precision(model, options.precision);
   model.finish();
 
   // [accuracy]: preset name -> spacing factor
   const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
   out.accuracy = accuracy.preset;
   out.coarsening = accuracy.coarsening;
-  if (!options.precision.empty()) {
-    if (options.precision != "double" && options.precision != "float")
-      throw SceneError(file.string() + ": precision '" + options.precision + "' is unknown; allowed: double, float");
-    out.precision = options.precision;
-  }
   const double f = out.coarsening;
 
   // [discretization]
