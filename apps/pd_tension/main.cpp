@@ -1,7 +1,7 @@
 // Seed 003 §4(1): uniaxial tension of a bar, NOSB peridynamics. Measures Young's modulus (quasi-static,
 // by dynamic relaxation) on the scene's layout, or, with --identify-omega-v, the oscillation frequency
 // omega_v of eq. (3) from the same pull without damping or control (as the report identified it).
-//   pd_tension [--scene scenes/pd/tension_round_bar.toml] [--out out/pd_tension] [--identify-omega-v]
+//   pd_tension [--scene scenes/pd/tension_conforming.toml] [--out out/pd_tension] [--identify-omega-v]
 // Writes summary.json (modulus, reference, relative_error or omega_v, particles, bonds, wall_seconds)
 // and fields.h5 + fields.xdmf (displacement at the end).
 #include <cmath>
@@ -77,7 +77,7 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
 int main(int argc, char** argv) {
   CLI::App app{"Uniaxial tension of a bar, NOSB peridynamics (seed 003 section 4(1))"};
   pm::apps::CommonOptions opt;
-  pm::apps::add_common_options(app, opt, "scenes/pd/tension_round_bar.toml", "out/pd_tension");
+  pm::apps::add_common_options(app, opt, "scenes/pd/tension_conforming.toml", "out/pd_tension");
   bool identify = false;
   double m = 0;
   app.add_flag("--identify-omega-v", identify, "measure omega_v of eq. (3) from the undamped pull without control");
