@@ -12,13 +12,12 @@
 // it) keeps the waves diffracted at the top corners and the P burst reflected at the bottom out of the
 // analysis window at A. Writes <out>/<scene stem>.csv for tools/plot_accuracy_cost.py and, per run,
 // <stem>_series_<precision>_c<factor>.csv (probe A with and without the crack, the window start).
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "apps/common/app.hpp"
+#include "bench/support/sweep_common.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "mps_elastic/harmonics.hpp"
 
@@ -26,24 +25,6 @@ namespace pm = polymech;
 namespace me = polymech::mps_elastic;
 
 namespace {
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-std::vector<double> parse_list(const std::string& s) {
-  std::vector<double> out;
-  std::size_t a = 0;
-  while (a <= s.size()) {
-    const auto b = std::min(s.find(',', a), s.size());
-    out.push_back(std::stod(s.substr(a, b - a)));
-    a = b + 1;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -64,7 +45,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("sweep_mps_harmonics", [&] {
     pm::apps::KokkosSession kokkos(threads);
-    auto factors = parse_list(coarsening);
+    auto factors = pm::sweeps::parse_numbers("--coarsening", coarsening);
     std::sort(factors.begin(), factors.end());
     std::vector<std::string> precs = {"double"};
     if (precisions.find("float") != std::string::npos) precs.push_back("float");
@@ -112,13 +93,13 @@ int main(int argc, char** argv) {
         c.steps = me::steps_until_burst_passes(c, scene.harmonics_probe);
         std::fprintf(stderr, "[sweep] %s, coarsening %g (spacing %.3g m), %lld steps ...\n", prec.c_str(), f,
                      c.spacing, static_cast<long long>(c.steps));
-        const double cpu0 = cpu_seconds();
+        const double cpu0 = pm::sweeps::cpu_seconds();
         const int field = scene.harmonics_component == "u1" ? pm::mps::probe_u1 : pm::mps::probe_u3;
         const auto res = prec == "float"
                              ? me::run_harmonics_case<float>(c, scene.harmonics_probe, field, scene.normal_reaction_ratio)
                              : me::run_harmonics_case<double>(c, scene.harmonics_probe, field, scene.normal_reaction_ratio);
         Row r{prec == "float", f, c.spacing, res.crack.particles, c.steps,
-              res.intact.stats.wall_seconds + res.crack.stats.wall_seconds, cpu_seconds() - cpu0,
+              res.intact.stats.wall_seconds + res.crack.stats.wall_seconds, pm::sweeps::cpu_seconds() - cpu0,
               res.ratios_crack, res.ratios_intact};
         rows.push_back(r);
         // the probe records of both runs, to see what the ratios are made of

@@ -8,14 +8,13 @@
 // Writes <out>/mps_point_source.csv (rewritten after every run, so a long sweep can be watched);
 // tools/plot_accuracy_cost.py draws it. Powers of two keep the scene's 0.4 mm source exactly
 // 1, 2, 4, 8 cells wide, so the runs differ only in resolution.
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "apps/common/app.hpp"
+#include "bench/support/sweep_common.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "mps_elastic/run.hpp"
 
@@ -34,21 +33,14 @@ struct Run {
 
 // CPU time of this process (all threads): on a shared machine, the single-thread CPU time of a run
 // is a far steadier cost measure than its wall time.
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
 template <class T>
 Run run_one(const pm::io::MpsElasticScene& scene, double duration) {
   me::Config c = scene.config;
   c.steps = static_cast<std::int64_t>(std::llround(duration / c.dt));
   me::MpsElastic<T> m(c);
-  const double cpu0 = cpu_seconds();
+  const double cpu0 = pm::sweeps::cpu_seconds();
   const auto stats = me::run(m, c.steps);
-  const double cpu = cpu_seconds() - cpu0;
+  const double cpu = pm::sweeps::cpu_seconds() - cpu0;
   if (!stats.finite) throw std::runtime_error("run at coarsening " + std::to_string(scene.coarsening) + " went unstable");
   Run r;
   r.precision = scene.precision;
@@ -82,17 +74,6 @@ double waveform_difference(const me::ProbeHistory& h, const me::ProbeHistory& re
   return den > 0 ? std::sqrt(num / den) : 0.0;
 }
 
-std::vector<double> parse_list(const std::string& s) {
-  std::vector<double> out;
-  std::size_t a = 0;
-  while (a <= s.size()) {
-    const auto b = std::min(s.find(',', a), s.size());
-    out.push_back(std::stod(s.substr(a, b - a)));
-    a = b + 1;
-  }
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,7 +92,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("sweep_mps_point_source", [&] {
     pm::apps::KokkosSession kokkos(threads);
-    auto factors = parse_list(coarsening);
+    auto factors = pm::sweeps::parse_numbers("--coarsening", coarsening);
     std::sort(factors.begin(), factors.end());  // finest first: it is the reference
     std::vector<std::string> precs;
     for (const char* p : {"double", "float"})

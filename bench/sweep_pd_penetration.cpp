@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "apps/common/app.hpp"
+#include "bench/support/sweep_common.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "nosb_pd/impact.hpp"
 
@@ -43,14 +44,6 @@ Row run_one(const pm::io::NosbPdScene& scene) {
           stats.diverged ? NAN : stats.energy_error()};
 }
 
-std::vector<double> numbers(const std::string& s) {
-  std::vector<double> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -74,15 +67,15 @@ int main(int argc, char** argv) {
     std::vector<std::string> precs;
     for (const char* p : {"double", "float"})
       if (precisions.find(p) != std::string::npos) precs.push_back(p);
-    const auto ms = m_list.empty() ? std::vector<double>{0.0} : numbers(m_list);
-    const auto cvs = cv_list.empty() ? std::vector<double>{-1.0} : numbers(cv_list);
-    const auto vs = v_list.empty() ? std::vector<double>{0.0} : numbers(v_list);
+    const auto ms = m_list.empty() ? std::vector<double>{0.0} : pm::sweeps::parse_numbers("--horizon-ratio", m_list);
+    const auto cvs = cv_list.empty() ? std::vector<double>{-1.0} : pm::sweeps::parse_numbers("--cv", cv_list);
+    const auto vs = v_list.empty() ? std::vector<double>{0.0} : pm::sweeps::parse_numbers("--velocity", v_list);
     std::vector<Row> rows;
     const std::vector<std::string> header = {"is_float", "coarsening", "spacing", "horizon_ratio", "c_v", "velocity", "particles",
                                              "bonds", "steps", "wall_seconds", "residual_velocity", "perforated",
                                              "residual_velocity_error", "core_damage", "rim_damage", "energy_error_fraction"};
     for (const auto& prec : precs)
-      for (double f : numbers(coarsening))
+      for (double f : pm::sweeps::parse_numbers("--coarsening", coarsening))
         for (double m : ms)
           for (double cv : cvs)
             for (double v : vs) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "apps/common/app.hpp"
+#include "bench/support/sweep_common.hpp"
 #include "io/nosb_pd_scene.hpp"
 
 namespace pm = polymech;
@@ -23,14 +24,6 @@ std::vector<double> run_one(const pm::io::NosbPdScene& scene) {
   const auto r = np::run_tension(m, scene.tension);
   return {scene.precision == "float" ? 1.0 : 0.0, scene.coarsening, scene.config.spacing, scene.config.horizon_ratio,
           double(m.particles()), double(m.bonds()), double(r.steps), r.wall_seconds, r.modulus, std::abs(r.relative_error)};
-}
-
-std::vector<double> numbers(const std::string& s) {
-  std::vector<double> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
-  return out;
 }
 
 }  // namespace
@@ -56,8 +49,8 @@ int main(int argc, char** argv) {
     std::vector<std::vector<double>> rows;
     for (const char* prec : {"double", "float"}) {
       if (precisions.find(prec) == std::string::npos) continue;
-      for (double m : numbers(m_list))
-        for (double f : numbers(coarsening)) {
+      for (double m : pm::sweeps::parse_numbers("--horizon-ratio", m_list))
+        for (double f : pm::sweeps::parse_numbers("--coarsening", coarsening)) {
           pm::io::NosbPdSceneOptions o;
           o.coarsening = f;
           o.precision = prec;
