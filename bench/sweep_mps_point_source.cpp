@@ -31,8 +31,8 @@ struct Run {
   me::ProbeHistory history;
 };
 
-// CPU time of this process (all threads): on a shared machine, the single-thread CPU time of a run
-// is a far steadier cost measure than its wall time.
+// One run of the scene for `duration` seconds; its cost is the CPU time of this process (all threads):
+// on a shared machine, the single-thread CPU time of a run is a far steadier measure than wall time.
 template <class T>
 Run run_one(const pm::io::MpsElasticScene& scene, double duration) {
   me::Config c = scene.config;
