@@ -26,13 +26,15 @@ me::Config plate(std::int64_t particles, bool rotation) {
   return c;
 }
 
-template <class T, bool Rotation>
+// Strategy: the neighbour loop's (kernels/neighbors/neighbor_loop.hpp), serial over a row or a team
+// per particle.
+template <class T, bool Rotation, class Strategy = pm::neighbors::SerialNeighbors>
 void BM_MpsForce(benchmark::State& state) {
   me::MpsElastic<T> m(plate(state.range(0), Rotation));
   for (int s = 0; s < 300; ++s) m.step();  // a wave in the plate, so nothing is trivially zero
   for (auto _ : state) {
-    pm::mps::volumetric_strain<T, Rotation>(m.family(), m.fields(), m.params());
-    pm::mps::elastic_acceleration<T, Rotation>(m.family(), m.fields(), m.params());
+    pm::mps::volumetric_strain<T, Rotation>(m.family(), m.fields(), m.params(), Strategy{});
+    pm::mps::elastic_acceleration<T, Rotation>(m.family(), m.fields(), m.params(), Strategy{});
     Kokkos::fence();
   }
   state.SetItemsProcessed(state.iterations() * m.bonds());  // pair interactions (full list)
@@ -61,5 +63,10 @@ void BM_MpsStep(benchmark::State& state) {
 POLYMECH_MPS_BENCH(BM_MpsForce, double, true, "MpsForce/double/rotation");
 POLYMECH_MPS_BENCH(BM_MpsForce, double, false, "MpsForce/double/no_rotation");
 POLYMECH_MPS_BENCH(BM_MpsForce, float, true, "MpsForce/float/rotation");
+BENCHMARK(BM_MpsForce<double, true, pm::neighbors::TeamNeighbors>)
+    ->Name("MpsForce/double/rotation/team")
+    ->Arg(100000)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 POLYMECH_MPS_BENCH(BM_MpsStep, double, true, "MpsStep/double/rotation");
 POLYMECH_MPS_BENCH(BM_MpsStep, float, true, "MpsStep/float/rotation");

@@ -61,14 +61,16 @@ void BM_PdDeformationGradient(benchmark::State& state) {
   state.counters["bonds_per_particle"] = static_cast<double>(m.bonds()) / m.particles();
 }
 
-template <class T>
+// Strategy: the neighbour loop's (kernels/neighbors/neighbor_loop.hpp), serial over a row or a team
+// per particle.
+template <class T, class Strategy = pm::neighbors::SerialNeighbors>
 void BM_PdBondForces(benchmark::State& state) {
   np::NosbPd<T, 3> m(box(state.range(0), {}));
   deform(m);
   pm::pd::ForceParams<T> p;
   p.density = T(7850);
   for (auto _ : state) {
-    pm::pd::bond_forces(m.family(), m.fields(), p, false, false);
+    pm::pd::bond_forces(m.family(), m.fields(), p, false, false, Strategy{});
     Kokkos::fence();
   }
   state.SetItemsProcessed(state.iterations() * m.bonds());
@@ -117,6 +119,12 @@ POLYMECH_PD_BENCH(BM_PdDeformationGradient, double, "PdDeformationGradient/doubl
 POLYMECH_PD_BENCH(BM_PdDeformationGradient, float, "PdDeformationGradient/float");
 POLYMECH_PD_BENCH(BM_PdBondForces, double, "PdBondForces/double");
 POLYMECH_PD_BENCH(BM_PdBondForces, float, "PdBondForces/float");
+BENCHMARK(BM_PdBondForces<double, pm::neighbors::TeamNeighbors>)
+    ->Name("PdBondForces/double/team")
+    ->Arg(100000)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.5);
 POLYMECH_PD_BENCH(BM_PdStep, double, "PdStep/double/johnson_cook_damage_viscosity");
 POLYMECH_PD_BENCH(BM_PdStep, float, "PdStep/float/johnson_cook_damage_viscosity");
 BENCHMARK(BM_PdNeighborSearch<double>)

@@ -12,6 +12,7 @@
 #include "apps/common/app.hpp"
 #include "bench/support/sweep_common.hpp"
 #include "io/nosb_pd_scene.hpp"
+#include "nosb_pd/tension.hpp"
 
 namespace pm = polymech;
 namespace np = polymech::nosb_pd;
@@ -22,7 +23,7 @@ template <class T, int D>
 std::vector<double> run_one(const pm::io::NosbPdScene& scene) {
   np::NosbPd<T, D> m(scene.config);
   const auto r = np::run_tension(m, scene.tension);
-  return {scene.precision == "float" ? 1.0 : 0.0, scene.coarsening, scene.config.spacing, scene.config.horizon_ratio,
+  return {scene.header.precision == "float" ? 1.0 : 0.0, scene.header.coarsening, scene.config.spacing, scene.config.horizon_ratio,
           double(m.particles()), double(m.bonds()), double(r.steps), r.wall_seconds, r.modulus, std::abs(r.relative_error)};
 }
 
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
           o.precision = prec;
           o.horizon_ratio = m;
           const auto scene = pm::io::load_nosb_pd_scene(scene_file, o);
-          const bool fl = scene.precision == "float";
+          const bool fl = scene.header.precision == "float";
           rows.push_back(scene.config.dimension == 2 ? (fl ? run_one<float, 2>(scene) : run_one<double, 2>(scene))
                                                      : (fl ? run_one<float, 3>(scene) : run_one<double, 3>(scene)));
           const auto& r = rows.back();

@@ -15,8 +15,6 @@ namespace polymech::io {
 
 namespace {
 
-namespace hz = polymech::helmholtz;
-
 // Line-by-line reader that knows where it is, for error messages.
 class MshReader {
  public:
@@ -132,22 +130,15 @@ int node_count(long long type) {
   }
 }
 
-struct Quad {
-  std::array<std::int64_t, 4> vertices;
-  int boundary;
-  int line;
-  long long tag;
-};
-
 }  // namespace
 
-hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
+mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   MshReader r(file);
-  hz::HexMesh mesh;
+  mesh::Mesh mesh;
+  mesh.file = file.string();
   std::map<std::pair<int, int>, std::string> physical_names;  // (dim, tag) -> name
   std::map<int, std::vector<int>> surface_physicals;          // surface entity -> physical tags
   std::unordered_map<long long, std::int64_t> node_index;     // node tag -> vertex index
-  std::vector<Quad> quads;
   bool have_format = false, have_nodes = false, have_elements = false, have_entities = false;
   std::string line;
   while (r.next(line)) {
@@ -205,7 +196,7 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
     } else if (section == "$Nodes") {
       if (!have_format) r.fail("$Nodes before $MeshFormat");
       const auto head = r.integers("numEntityBlocks numNodes minNodeTag maxNodeTag", 4);
-      mesh.vertices.reserve(static_cast<std::size_t>(3 * head[1]));
+      mesh.nodes.reserve(static_cast<std::size_t>(3 * head[1]));
       for (long long b = 0; b < head[0]; ++b) {
         const auto block = r.integers("entityDim entityTag parametric numNodesInBlock", 4);
         const long long n = block[3];
@@ -215,13 +206,13 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
         for (long long i = 0; i < n; ++i) {
           const auto x = r.reals("node coordinates x y z", 3);
           if (!parametric && x.size() != 3) r.fail("expected 3 coordinates (x y z)");
-          if (!node_index.emplace(tags[i], mesh.vertex_count()).second)
+          if (!node_index.emplace(tags[i], mesh.node_count()).second)
             r.fail("node tag " + std::to_string(tags[i]) + " appears twice");
-          for (int k = 0; k < 3; ++k) mesh.vertices.push_back(x[k]);
+          for (int k = 0; k < 3; ++k) mesh.nodes.push_back(x[k]);
         }
       }
-      if (mesh.vertex_count() != head[1])
-        r.fail("$Nodes announced " + std::to_string(head[1]) + " nodes, found " + std::to_string(mesh.vertex_count()));
+      if (mesh.node_count() != head[1])
+        r.fail("$Nodes announced " + std::to_string(head[1]) + " nodes, found " + std::to_string(mesh.node_count()));
       r.expect_end("$Nodes");
       have_nodes = true;
     } else if (section == "$Elements") {
@@ -233,7 +224,7 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
         const int nn = node_count(type);
         if (nn < 0) r.fail("unknown element type " + std::to_string(type));
         const bool keep_hex = dim == 3 && type == 5;
-        const bool keep_quad = dim == 2 && type == 3;
+        const bool keep_facet = dim == 2 && (type == 3 || type == 2);
         if (dim == 3 && !keep_hex)
           r.fail(element_type_name(type) + " elements are not supported; allowed in volumes: 8-node hexahedra (type 5)");
         int boundary = -1;
@@ -249,13 +240,13 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
             r.fail("surface " + std::to_string(entity) + " belongs to " + std::to_string(names.size()) +
                    " physical groups; a boundary face needs exactly one name");
           if (names.size() == 1) {
-            if (!keep_quad)
+            if (!keep_facet)
               r.fail(element_type_name(type) + " elements on the physical surface '" + names[0] +
-                     "' are not supported; allowed on boundaries: 4-node quadrangles (type 3)");
-            boundary = mesh.boundary_index(names[0]);
+                     "' are not supported; allowed on surfaces: 4-node quadrangles (type 3), 3-node triangles (type 2)");
+            boundary = mesh.group_index(names[0]);
             if (boundary < 0) {
-              boundary = static_cast<int>(mesh.boundary_names.size());
-              mesh.boundary_names.push_back(names[0]);
+              boundary = static_cast<int>(mesh.groups.size());
+              mesh.groups.push_back(names[0]);
             }
           }
         }
@@ -270,18 +261,23 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
                      ", which is not in $Nodes");
             ids[k] = it->second;
           }
+          const std::string origin = file.string() + ":" + std::to_string(r.line_number());
           if (keep_hex) {
-            for (int k = 0; k < 8; ++k) mesh.hexes.push_back(ids[k]);
-            mesh.element_origin.push_back(r.where() + ", element " + std::to_string(v[0]));
-            const std::int64_t e = mesh.element_count() - 1;
             std::set<std::int64_t> distinct(ids.begin(), ids.end());
             if (distinct.size() != 8) r.fail("hexahedron " + std::to_string(v[0]) + " repeats a node (degenerate)");
-            const double ratio = hz::min_corner_jacobian_ratio(mesh, e);
-            if (!(ratio > 0))
-              r.fail("hexahedron " + std::to_string(v[0]) + " is inverted or degenerate (det J at a corner / mean = " +
-                     format_number(ratio) + "; allowed: > 0); its nodes must follow Gmsh's hexahedron order");
+            mesh::Hexahedron h;
+            for (int k = 0; k < 8; ++k) h.nodes[k] = ids[k];
+            h.origin = origin;
+            h.tag = v[0];
+            mesh.hexahedra.push_back(h);
           } else {
-            quads.push_back({{ids[0], ids[1], ids[2], ids[3]}, boundary, r.line_number(), v[0]});
+            mesh::Facet f;
+            for (int k = 0; k < nn; ++k) f.nodes[k] = ids[k];
+            f.corners = nn;
+            f.group = boundary;
+            f.origin = origin;
+            f.tag = v[0];
+            mesh.facets.push_back(f);
           }
         }
       }
@@ -304,46 +300,7 @@ hz::HexMesh read_gmsh_hex_mesh(const std::filesystem::path& file) {
   }
   if (!have_format) throw MeshError(file.string() + ": no $MeshFormat section: not a Gmsh MSH file");
   if (!have_nodes || !have_elements) throw MeshError(file.string() + ": no $Nodes or $Elements section");
-  if (mesh.element_count() == 0)
-    throw MeshError(file.string() + ": no 8-node hexahedra in volumes; allowed: hexahedral meshes "
-                                    "(e.g. transfinite/recombined volumes, or Mesh.SubdivisionAlgorithm = 2)");
   (void)have_entities;
-
-  // Boundary quadrangles -> (element, local face) of the mesh exterior.
-  std::int64_t overused = 0;
-  const auto exterior = hz::exterior_faces(mesh, &overused);
-  if (overused > 0)
-    throw MeshError(file.string() + ": " + std::to_string(overused) +
-                    " faces are shared by more than two hexahedra (overlapping or non-conforming mesh)");
-  std::map<std::array<std::int64_t, 4>, std::size_t> face_of;
-  for (std::size_t k = 0; k < exterior.size(); ++k) {
-    const auto fv = hz::hex_face_vertices(exterior[k].face);
-    std::array<std::int64_t, 4> key;
-    for (int c = 0; c < 4; ++c) key[c] = mesh.hexes[8 * exterior[k].element + fv[c]];
-    std::sort(key.begin(), key.end());
-    face_of[key] = k;
-  }
-  std::vector<int> assigned(exterior.size(), -1);
-  for (const auto& q : quads) {
-    auto key = q.vertices;
-    std::sort(key.begin(), key.end());
-    const auto it = face_of.find(key);
-    if (it == face_of.end())
-      throw MeshError(file.string() + ":" + std::to_string(q.line) + ": quadrangle " + std::to_string(q.tag) +
-                      " of boundary '" + mesh.boundary_names[q.boundary] +
-                      "' is not a face on the boundary of the hexahedral mesh");
-    int& a = assigned[it->second];
-    if (a >= 0 && a != q.boundary)
-      throw MeshError(file.string() + ":" + std::to_string(q.line) + ": quadrangle " + std::to_string(q.tag) +
-                      " is in two boundaries ('" + mesh.boundary_names[a] + "' and '" +
-                      mesh.boundary_names[q.boundary] + "')");
-    if (a < 0) {
-      a = q.boundary;
-      hz::BoundaryFace f = exterior[it->second];
-      f.boundary = q.boundary;
-      mesh.boundary_faces.push_back(f);
-    }
-  }
   return mesh;
 }
 

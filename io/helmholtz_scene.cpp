@@ -4,7 +4,9 @@
 #include <cmath>
 #include <map>
 
-#include "helmholtz/helmholtz.hpp"
+#include "fem/orders.hpp"
+#include "helmholtz/effect_table.hpp"
+#include "helmholtz/mesh_import.hpp"
 #include "io/gmsh_msh.hpp"
 #include "io/model_table.hpp"
 
@@ -37,18 +39,13 @@ hz::BoundaryKind kind_of(const std::string& s) {
 }  // namespace
 
 HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const HelmholtzSceneOptions& options) {
-  const Scene scene = Scene::load(file);
-  const SceneTable root = scene.root();
+  OpenScene opened = open_scene(file, "helmholtz", hz::effect_table(), options.precision);
+  const SceneTable& root = opened.root;
+  const SceneTable& model = opened.model;
   HelmholtzScene out;
-  out.file = file;
-  out.title = root.string("title", file.stem().string());
+  out.header = opened.header;
   hz::Config& c = out.config;
-
-  // [model]
-  const SceneTable model = root.table("model");
-  model.choice("kind", {"helmholtz"});
-  c.effects = read_effects(model, hz::Helmholtz<double>::effects());
-  out.precision = read_precision(model, options.precision);
+  c.effects = out.header.effects;
 
   // [discretization]
   const SceneTable disc = root.table("discretization");
@@ -69,9 +66,7 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
       acc->fail_table("accuracy presets scale box meshes; a Gmsh mesh is used as it is");
   } else {
     // without [accuracy]: the element counts as written
-    const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening, "paper");
-    out.accuracy = accuracy.preset;
-    out.coarsening = accuracy.coarsening;
+    out.header.set_accuracy(read_accuracy(root, options.accuracy, options.coarsening, "paper"));
   }
   if (mesh_kind == "box") {
     hz::BoxSpec box;
@@ -82,7 +77,7 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
       if (n[d] != std::floor(n[d]) || n[d] > 1e5)
         mesh.fail("elements", "must be whole numbers in [1, 100000], got " + format_number(n[d]));
       box.elements[d] = options.elements[d] > 0 ? options.elements[d]
-                                                : std::max(1, static_cast<int>(std::lround(n[d] / out.coarsening)));
+                                                : std::max(1, static_cast<int>(std::lround(n[d] / out.header.coarsening)));
       out.box_elements[d] = box.elements[d];
     }
     box.perturbation = mesh.real("perturbation", 0.0, between(0.0, 1.0));
@@ -103,15 +98,17 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
                        "' cannot be applied: presets scale box meshes and this scene reads a Gmsh mesh");
     if (options.coarsening > 0 || options.elements[0] > 0)
       throw SceneError(file.string() + ": a Gmsh mesh cannot be coarsened or refined here");
-    out.accuracy = "mesh file";
+    out.header.accuracy = "mesh file";
     const std::string name = mesh.string("file");
     std::filesystem::path path = name;
     if (path.is_relative()) path = file.parent_path() / path;
     if (!std::filesystem::exists(path))
       mesh.fail("file", "= \"" + name + "\": no such file (looked for " + path.string() + ")");
     try {
-      c.mesh = read_gmsh_hex_mesh(path);
+      c.mesh = hz::hex_mesh_from(read_gmsh_mesh(path));
     } catch (const MeshError& e) {
+      mesh.fail("file", "= \"" + name + "\" cannot be used: " + e.what());
+    } catch (const std::invalid_argument& e) {
       mesh.fail("file", "= \"" + name + "\" cannot be used: " + e.what());
     }
     out.mesh_source = path.string();

@@ -20,12 +20,9 @@
 namespace polymech::io {
 
 struct HelmholtzScene {
-  std::filesystem::path file;
-  std::string title;
+  SceneHeader header;           // accuracy: the preset name ("mesh file" for Gmsh meshes); coarsening: box
+                                // element counts divided by this
   helmholtz::Config config;     // at the chosen accuracy / order / frequency
-  std::string accuracy;         // preset name ("mesh file" for Gmsh meshes)
-  double coarsening = 1.0;      // box: element counts divided by this
-  std::string precision;        // "double" or "float"
   std::string mesh_source;      // "box 20 x 4 x 2" or the .msh path
   std::array<int, 3> box_elements{0, 0, 0};  // box meshes: element counts used
   // output

@@ -4,10 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "contact/crack_geometry.hpp"
-#include "io/model_table.hpp"
-#include "mps_elastic/mps_elastic.hpp"
-
 namespace polymech::io {
 
 namespace me = polymech::mps_elastic;
@@ -32,65 +28,22 @@ std::vector<std::string> probe_pair(const SceneTable& t, const std::string& key,
   return names;
 }
 
-// Bonds the crack cuts and contact pairs it forms, counted on the lattice around the crack only.
-struct CrackCount {
-  std::int64_t cut = 0, pairs = 0;
-};
-CrackCount count_crack_bonds(const me::Config& c) {
-  const me::Lattice lat = me::make_lattice(c);
-  const auto seg = contact::CrackSegment::make(c.crack.x1, c.crack.x3, c.crack.length, c.crack.angle);
-  const double re = c.re(), l0 = c.spacing, reach = seg.half_length + re;
-  const auto m = static_cast<std::int64_t>(re / l0) + 1;
-  const double pair_r = c.crack.contact_radius * l0;
-  auto cell = [&](double x, std::int64_t n) { return std::clamp<std::int64_t>(static_cast<std::int64_t>(x / l0), 0, n - 1); };
-  CrackCount out;
-  for (std::int64_t j = cell(c.crack.x3 - reach, lat.ny); j <= cell(c.crack.x3 + reach, lat.ny); ++j)
-    for (std::int64_t i = cell(c.crack.x1 - reach, lat.nx); i <= cell(c.crack.x1 + reach, lat.nx); ++i) {
-      const double xa = (static_cast<double>(i) + 0.5) * l0, ya = (static_cast<double>(j) + 0.5) * l0;
-      if (!seg.upper(xa, ya)) continue;
-      for (std::int64_t b = -m; b <= m; ++b)
-        for (std::int64_t a = -m; a <= m; ++a) {
-          if (i + a < 0 || i + a >= lat.nx || j + b < 0 || j + b >= lat.ny) continue;
-          const double r = l0 * std::hypot(static_cast<double>(a), static_cast<double>(b));
-          if (r == 0.0 || r > re * (1 + 1e-6)) continue;
-          if (!seg.cuts(xa, ya, xa + static_cast<double>(a) * l0, ya + static_cast<double>(b) * l0)) continue;
-          ++out.cut;
-          if (r <= pair_r) ++out.pairs;
-        }
-    }
-  return out;
-}
-
 }  // namespace
 
-Point2 excitation_source_point(const me::Config& c) {
-  const me::Lattice lat = me::make_lattice(c);
-  Point2 p;
-  p.x1 = c.excitation.position < 0 ? 0.5 * c.width : c.excitation.position;
-  p.x3 = (static_cast<double>(lat.ny) - 0.5) * c.spacing;  // the top row
-  return p;
-}
-
 MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const MpsSceneOptions& options) {
-  const Scene scene = Scene::load(file);
-  const SceneTable root = scene.root();
-  MpsElasticScene out;
-  out.file = file;
-  out.title = root.string("title", file.stem().string());
-  me::Config& c = out.config;
-
-  // [model]
-  const SceneTable model = root.table("model");
-  model.choice("kind", {"mps_elastic"});
-  c.effects = read_effects(model, me::MpsElastic<double>::effects());
-  out.precision = read_precision(model, options.precision);
+  OpenScene s = open_scene(file, "mps_elastic", me::effect_table(), options.precision);
+  const SceneTable& root = s.root;
+  const SceneTable& model = s.model;
   model.finish();
+  MpsElasticScene out;
+  out.header = s.header;
+  me::Config& c = out.config;
+  c.effects = out.header.effects;
 
   // [accuracy]: preset name -> spacing factor
-  const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
-  out.accuracy = accuracy.preset;
-  out.coarsening = accuracy.coarsening;
-  const double f = out.coarsening;
+  out.header.set_accuracy(read_accuracy(root, options.accuracy, options.coarsening));
+  const double f = out.header.coarsening;
+  const std::string& accuracy = out.header.accuracy;
 
   // [domain]
   const SceneTable domain = root.table("domain");
@@ -102,7 +55,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   c.number_density = nd == "mean" ? me::NumberDensityReference::mean : me::NumberDensityReference::interior;
   c.spacing = spacing * f;
   if (c.spacing > c.width || c.spacing > c.height)
-    domain.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + out.accuracy +
+    domain.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + accuracy +
                                "') is larger than the domain (" + format_number(c.width) + " x " +
                                format_number(c.height) + " m); allowed: 0 < spacing <= min(width, height) / " +
                                format_number(f));
@@ -138,7 +91,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     c.excitation.width = ex->real("width", 0.0, between(0.0, c.width));
     if (c.excitation.period < 4.0 * c.dt)
       ex->fail("period", "= " + format_number(c.excitation.period) + " s is shorter than 4 time steps (dt = " +
-                             format_number(c.dt) + " s at accuracy '" + out.accuracy + "'); the pulse would not be resolved");
+                             format_number(c.dt) + " s at accuracy '" + accuracy + "'); the pulse would not be resolved");
     ex->finish();
   } else {
     c.excitation.kind = me::ExcitationKind::none;
@@ -160,7 +113,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
     k.contact_radius = cr->real("contact_radius", 1.0001, between(1.0, 3.0));
     if (k.length < c.spacing)
       cr->fail("length", "= " + format_number(k.length) + " m is shorter than the spacing " + format_number(c.spacing) +
-                             " m at accuracy '" + out.accuracy + "': the crack would cut no bond; allowed: length >= spacing");
+                             " m at accuracy '" + accuracy + "': the crack would cut no bond; allowed: length >= spacing");
     if (c.effects.has("crack_contact.slip") && !c.effects.has("crack_contact.open_close") &&
         !(k.normal_reaction > 0) && !(out.normal_reaction_ratio > 0))
       cr->fail("normal_reaction", "is needed by effect crack_contact.slip without crack_contact.open_close (nothing "
@@ -214,21 +167,22 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
 
   // The crack must cut bonds, and with contact effects it must have contact pairs.
   if (c.crack.mode != me::CrackMode::none) {
-    const auto n = count_crack_bonds(c);
-    if (n.cut == 0)
+    const auto cut = out.header.precision == "float" ? me::crack_crossings<float>(c) : me::crack_crossings<double>(c);
+    const auto pairs = std::count_if(cut.begin(), cut.end(), [&](const me::CrackCrossing& x) { return me::is_contact_pair(x, c); });
+    if (cut.empty())
       throw SceneError(file.string() + ": [crack] cuts no bond at spacing " + format_number(c.spacing) +
                        " m (is it outside the plate, or shorter than the gap between particle rows?)");
-    if (n.pairs == 0 && (c.effects.has("crack_contact.open_close") || c.effects.has("crack_contact.slip")))
+    if (pairs == 0 && (c.effects.has("crack_contact.open_close") || c.effects.has("crack_contact.slip")))
       throw SceneError(file.string() + ": [crack] has no contact pair (no cut bond shorter than contact_radius = " +
                        format_number(c.crack.contact_radius) + " spacings)");
   }
 
   // The stability limit of this resolution (seed 000 eqs. (13)-(16) are explicit): refused before
   // anything is allocated at full size.
-  out.stable_dt = me::MpsElastic<double>::stable_time_step(c);
+  out.stable_dt = me::stable_time_step(c);
   if (c.dt > out.stable_dt)
     time.fail("dt", "= " + format_number(dt) + " s (x " + format_number(f) + " = " + format_number(c.dt) +
-                        " s at accuracy '" + out.accuracy + "') is above the stability limit " + format_number(out.stable_dt) +
+                        " s at accuracy '" + accuracy + "') is above the stability limit " + format_number(out.stable_dt) +
                         " s of spacing " + format_number(c.spacing) + " m; allowed: 0 < dt <= " +
                         format_number(out.stable_dt / f) + " s");
   return out;

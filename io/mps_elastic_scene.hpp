@@ -14,17 +14,13 @@
 #include <vector>
 
 #include "io/scene.hpp"
-#include "mps_elastic/config.hpp"
+#include "mps_elastic/setup.hpp"
 
 namespace polymech::io {
 
 struct MpsElasticScene {
-  std::filesystem::path file;
-  std::string title;
+  SceneHeader header;          // file, title, effects, precision, accuracy (coarsening: spacing / the scene's)
   mps_elastic::Config config;  // at the chosen accuracy
-  std::string accuracy;        // preset name
-  double coarsening = 1.0;     // spacing / the scene's spacing
-  std::string precision;       // "double" or "float"
   double stable_dt = 0.0;      // stability limit of this resolution [s]
   // Wave-speed measurement (optional): two probes on one ray from the source each.
   std::vector<std::string> p_wave_probes;  // arrival of the divergence (P) field
@@ -46,11 +42,5 @@ struct MpsSceneOptions {
 };
 
 MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const MpsSceneOptions& options = {});
-
-// Source point of the excitation (top row, at the excitation's x1) in the model's coordinates.
-struct Point2 {
-  double x1 = 0.0, x3 = 0.0;
-};
-Point2 excitation_source_point(const mps_elastic::Config& c);
 
 }  // namespace polymech::io

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "io/model_table.hpp"
-#include "nosb_pd/nosb_pd.hpp"
 
 namespace polymech::io {
 
@@ -74,26 +72,20 @@ void read_material(const SceneTable& m, np::Config& c) {
 }  // namespace
 
 NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSceneOptions& options) {
-  const Scene scene = Scene::load(file);
-  const SceneTable root = scene.root();
+  OpenScene s = open_scene(file, "nosb_pd", np::effect_table(), options.precision);
+  const SceneTable& root = s.root;
+  const SceneTable& model = s.model;
   NosbPdScene out;
-  out.file = file;
-  out.title = root.string("title", file.stem().string());
+  out.header = s.header;
   np::Config& c = out.config;
-
-  // [model]
-  const SceneTable model = root.table("model");
-  model.choice("kind", {"nosb_pd"});
   c.dimension = static_cast<int>(model.integer("dimension", 3, 2, 3));
-  c.effects = read_effects(model, np::NosbPd<double, 3>::effects());
-  out.precision = read_precision(model, options.precision);
+  c.effects = out.header.effects;
   model.finish();
 
   // [accuracy]: preset name -> spacing factor
-  const AccuracyChoice accuracy = read_accuracy(root, options.accuracy, options.coarsening);
-  out.accuracy = accuracy.preset;
-  out.coarsening = accuracy.coarsening;
-  const double f = out.coarsening;
+  out.header.set_accuracy(read_accuracy(root, options.accuracy, options.coarsening));
+  const double f = out.header.coarsening;
+  const std::string& accuracy = out.header.accuracy;
 
   // [discretization]
   const SceneTable disc = root.table("discretization");
@@ -116,7 +108,7 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
                             : g.shape == np::Shape::disc ? std::min(g.thickness, g.radius)
                                                          : std::min(g.length, g.radius);
     if (c.spacing > smallest)
-      disc.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + out.accuracy +
+      disc.fail("spacing", "= " + format_number(spacing) + " m (x " + format_number(f) + " at accuracy '" + accuracy +
                                "') is larger than the body (smallest dimension " + format_number(smallest) +
                                " m); allowed: 0 < spacing <= " + format_number(smallest / f) + " m");
     if (g.layout == np::Layout::cylindrical && (c.dimension != 3 || g.shape == np::Shape::box))
@@ -192,6 +184,7 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   load.finish();
 
   // [projectile]
+  double scene_velocity = 0.0;
   const auto pr = root.optional_table("projectile");
   if (c.loading == np::Loading::impact && !pr) load.fail("kind", "= \"impact\" needs a [projectile] table");
   if (pr) {
@@ -200,13 +193,24 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
     p.radius = pr->real("radius", positive());
     p.length = p.shape == np::ProjectileShape::blunt_cylinder ? pr->real("length", positive()) : 0.0;
     p.mass = pr->real("mass", positive());
-    p.velocity = options.velocity > 0 ? options.velocity : pr->real("velocity", positive());
-    if (options.velocity > 0) (void)pr->real("velocity", 0.0, Range{});  // still a known key
+    scene_velocity = pr->real("velocity", positive());
+    p.velocity = options.velocity > 0 ? options.velocity : scene_velocity;
     p.standoff = pr->real("standoff", 0.25 * c.spacing, non_negative());
     if (c.loading == np::Loading::impact && p.radius >= c.clamp_radius)
       pr->fail("radius", "= " + format_number(p.radius) + " m is not inside the clamped span; allowed: < loading.clamp_radius = " +
                              format_number(c.clamp_radius) + " m");
     pr->finish();
+  }
+
+  if (c.effects.has("contact") && c.loading != np::Loading::impact)
+    model.fail("effects", "lists \"contact\", the projectile of an impact, but loading.kind is not \"impact\"");
+
+  // [experiment]: the measured residual velocity at the scene's impact velocity (not at an overridden one)
+  if (auto ex = root.optional_table("experiment")) {
+    const double v = ex->real("residual_velocity", non_negative());
+    if (c.loading != np::Loading::impact) ex->fail_table("holds an impact's residual velocity, but loading.kind is not \"impact\"");
+    if (c.projectile.velocity == scene_velocity) out.experiment_residual_velocity = v;
+    ex->finish();
   }
 
   // [time]
@@ -225,10 +229,10 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   root.finish();
 
   // The stability limit of this resolution: refused before anything is allocated at full size.
-  out.stable_dt = c.dimension == 3 ? np::NosbPd<double, 3>::stable_time_step(c) : np::NosbPd<double, 2>::stable_time_step(c);
+  out.stable_dt = np::stable_time_step(c);
   if (dt > 0 && dt > out.stable_dt)
     time.fail("dt", "= " + format_number(dt / f) + " s (x " + format_number(f) + " = " + format_number(dt) + " s at accuracy '" +
-                        out.accuracy + "') is above the stability limit " + format_number(out.stable_dt) + " s of spacing " +
+                        accuracy + "') is above the stability limit " + format_number(out.stable_dt) + " s of spacing " +
                         format_number(c.spacing) + " m; allowed: 0 (automatic) or 0 < dt <= " + format_number(out.stable_dt / f) + " s");
   c.dt = dt > 0 ? dt : c.dt_safety * out.stable_dt;
   return out;

@@ -11,28 +11,26 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <string>
 
 #include "io/scene.hpp"
-#include "nosb_pd/config.hpp"
-#include "nosb_pd/tension.hpp"
+#include "nosb_pd/setup.hpp"
 
 namespace polymech::io {
 
 struct NosbPdScene {
-  std::filesystem::path file;
-  std::string title;
+  SceneHeader header;      // file, title, effects, precision, accuracy (coarsening: spacing / the scene's)
   nosb_pd::Config config;  // at the chosen accuracy (config.dt resolved: never 0)
-  std::string accuracy;    // preset name
-  double coarsening = 1.0;  // spacing / the scene's spacing
-  std::string precision;   // "double" or "float"
   double stable_dt = 0.0;  // stability limit of this resolution [s]
   double end_time = 0.0;   // impact: simulated time [s]
   nosb_pd::TensionSchedule tension;  // tension: ramp and hold, in bar transit times
   std::int64_t sample_every = 50;    // steps between energy / projectile samples
   std::int64_t snapshots = 0;        // number of field snapshots over the run (0: none)
   bool stop_after_perforation = true;  // impact: end once the projectile is through and free
+  // impact: the experiment's residual velocity at this scene's impact velocity (NaN: none given)
+  double experiment_residual_velocity = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct NosbPdSceneOptions {

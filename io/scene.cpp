@@ -1,5 +1,7 @@
 #include "io/scene.hpp"
 
+#include "io/model_table.hpp"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -314,6 +316,20 @@ AccuracyChoice read_accuracy(const SceneTable& root, const std::string& requeste
   }
   out.coarsening = requested_coarsening > 0 ? requested_coarsening : factors.at(out.preset);
   return out;
+}
+
+OpenScene open_scene(const std::filesystem::path& file, const std::string& kind, const std::vector<EffectSpec>& declared,
+                     const std::string& precision) {
+  Scene scene = Scene::load(file);
+  SceneTable root = scene.root();
+  SceneTable model = root.table("model");
+  SceneHeader h;
+  h.file = file;
+  h.title = root.string("title", file.stem().string());
+  h.kind = model.choice("kind", {kind});
+  h.effects = read_effects(model, declared);
+  h.precision = read_precision(model, precision);
+  return OpenScene{std::move(scene), root, model, std::move(h)};
 }
 
 }  // namespace polymech::io

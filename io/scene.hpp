@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "effects.hpp"
+
 namespace polymech::io {
 
 class SceneError : public std::runtime_error {
@@ -118,5 +120,37 @@ struct AccuracyChoice {
 // default) and `requested_coarsening` (> 0: an explicit factor, e.g. from a sweep) override it.
 AccuracyChoice read_accuracy(const SceneTable& root, const std::string& requested, double requested_coarsening,
                              const std::string& default_preset = "draft");
+
+// What every scene says about itself, whatever its model: the file, its title, the model kind, the
+// effects it asks for (resolved against the model's), the precision and the accuracy preset.
+struct SceneHeader {
+  std::filesystem::path file;
+  std::string title;
+  std::string kind;
+  std::string precision;     // "double" or "float"
+  EffectSet effects;
+  std::string accuracy;      // preset name
+  double coarsening = 1.0;   // the preset's resolution factor
+
+  void set_accuracy(const AccuracyChoice& a) {
+    accuracy = a.preset;
+    coarsening = a.coarsening;
+  }
+};
+
+// A scene opened by its model's loader: the parsed file, its root table, its [model] table (with kind,
+// effects and precision read; the loader reads any further keys and calls model.finish()) and header.
+struct OpenScene {
+  Scene scene;
+  SceneTable root;
+  SceneTable model;
+  SceneHeader header;
+};
+
+// The first lines of every loader: load the file, read the title, check [model].kind == kind, resolve
+// [model].effects against `declared` and read [model].precision (`precision` overrides it when not
+// empty).
+OpenScene open_scene(const std::filesystem::path& file, const std::string& kind, const std::vector<EffectSpec>& declared,
+                     const std::string& precision = "");
 
 }  // namespace polymech::io

@@ -45,15 +45,14 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
 }
 
 // The keys every summary.json starts with: the case, its scene file and title, and what it ran with.
-template <class SceneT, class EffectsT>
-nlohmann::json summary_header(const std::string& name, const SceneT& scene, const EffectsT& effects) {
+inline nlohmann::json summary_header(const std::string& name, const io::SceneHeader& scene) {
   nlohmann::json j;
   j["case"] = name;
   j["scene"] = scene.file.string();
   j["title"] = scene.title;
   j["accuracy"] = scene.accuracy;
   j["precision"] = scene.precision;
-  j["effects"] = std::vector<std::string>(effects.names().begin(), effects.names().end());
+  j["effects"] = std::vector<std::string>(scene.effects.names().begin(), scene.effects.names().end());
   return j;
 }
 

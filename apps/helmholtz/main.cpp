@@ -50,8 +50,8 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
                "[helmholtz] %s\n  mesh %s (%lld elements, %d colours), order %d, %d DoFs, %s precision, %d threads\n"
                "  f = %g Hz, k = %.4g 1/m, h = %.4g m, k h = %.3g (%.1f nodes per wavelength); effects: %s\n"
                "  set-up %.2f s\n",
-               scene.title.c_str(), scene.mesh_source.c_str(), static_cast<long long>(model.element_count()),
-               model.colors(), c.order, model.dof_count(), scene.precision.c_str(),
+               scene.header.title.c_str(), scene.mesh_source.c_str(), static_cast<long long>(model.element_count()),
+               model.colors(), c.order, model.dof_count(), scene.header.precision.c_str(),
                pm::kx::concurrency<pm::ExecSpace>(), c.frequency, k, h, k * h, ppw,
                [&] {
                  static std::string s;
@@ -135,7 +135,7 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
     files.push_back("profile.csv");
   }
 
-  nlohmann::json j = pm::apps::summary_header("helmholtz", scene, c.effects);
+  nlohmann::json j = pm::apps::summary_header("helmholtz", scene.header);
   j["mesh"] = scene.mesh_source;
   j["order"] = c.order;
   j["h"] = h;
@@ -198,6 +198,6 @@ int main(int argc, char** argv) {
     so.order = order;
     so.frequency = frequency;
     const auto scene = pm::io::load_helmholtz_scene(opt.scene, so);
-    return scene.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
+    return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

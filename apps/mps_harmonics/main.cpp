@@ -96,7 +96,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
                       {b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
   const auto xdmf = scene.snapshot_every > 0 ? snapshots.finish().filename().string() : std::string();
 
-  nlohmann::json j = pm::apps::summary_header("mps_harmonics", scene, c.effects);
+  nlohmann::json j = pm::apps::summary_header("mps_harmonics", scene.header);
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["steps"] = c.steps;
@@ -177,6 +177,6 @@ int main(int argc, char** argv) {
     if (scene.harmonics_probe.empty())
       throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
-    return scene.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
+    return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

@@ -23,7 +23,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   std::fprintf(stderr,
                "[mps_point_source] %s\n  accuracy %s (spacing %.3g m, x%g), %s precision, %d particles, %lld bonds, "
                "n0 = %.4f\n  dt = %.3g s (stability limit %.3g s), %lld steps, %d threads\n",
-               scene.title.c_str(), scene.accuracy.c_str(), c.spacing, scene.coarsening, scene.precision.c_str(),
+               scene.header.title.c_str(), scene.header.accuracy.c_str(), c.spacing, scene.header.coarsening, scene.header.precision.c_str(),
                model.particles(), static_cast<long long>(model.bonds()), model.n0(), c.dt, scene.stable_dt,
                static_cast<long long>(c.steps), pm::kx::concurrency<pm::ExecSpace>());
 
@@ -50,10 +50,10 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   hooks.snapshot = snapshot;
   const me::RunStats stats = me::run(model, c.steps, hooks);
   progress.done(stats.steps);
-  if (!stats.finite) throw std::runtime_error("the run became unstable (NaN/Inf) before step " + std::to_string(stats.steps));
+  if (!stats.finite) throw std::runtime_error("the run became unstable at step " + std::to_string(stats.bad_step) + ": " + stats.reason);
 
   // Wave speeds from arrival times (seed 000 §5.1).
-  const auto src = pm::io::excitation_source_point(c);
+  const auto src = me::excitation_source_point(c);
   me::WaveSpeeds speeds;
   std::string speed_note;
   try {
@@ -72,12 +72,12 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
       columns.push_back(h.values[p][f]);
     }
   pm::io::write_csv(opt.out / "probes.csv", header, columns);
-  pm::io::write_csv(opt.out / "energy.csv", {"time", "total_energy"}, {stats.energy_time, stats.energy_total});
+  pm::io::write_csv(opt.out / "energy.csv", {"time", "total_energy"}, {stats.energy.time, stats.energy.total});
   const auto xdmf = snapshots.finish();
 
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   const double cp_a = model.cp_analytic(), cs_a = model.cs_analytic();
-  nlohmann::json j = pm::apps::summary_header("mps_point_source", scene, c.effects);
+  nlohmann::json j = pm::apps::summary_header("mps_point_source", scene.header);
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["stable_dt"] = scene.stable_dt;
@@ -100,17 +100,17 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
                           {"r_near", speeds.p.r_near}, {"r_far", speeds.p.r_far}}},
                    {"S", {{"t_near", num(speeds.s.t_near)}, {"t_far", num(speeds.s.t_far)},
                           {"r_near", speeds.s.r_near}, {"r_far", speeds.s.r_far}}}};
-  j["energy_after_excitation"] = stats.energy_after_excitation;
-  j["energy_final"] = stats.energy_final;
-  j["energy_drift"] = stats.energy_drift;
-  j["energy_spread"] = stats.energy_spread;
+  j["energy_after_excitation"] = stats.energy.reference;
+  j["energy_final"] = stats.energy.last;
+  j["energy_drift"] = stats.energy.drift();
+  j["energy_spread"] = stats.energy.spread();
   j["files"] = {"summary.json", "probes.csv", "energy.csv", "fields.h5", xdmf.filename().string()};
   pm::io::write_json(opt.out / "summary.json", j);
 
   std::printf("cp: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cp, cp_a, 100 * (speeds.cp - cp_a) / cp_a);
   std::printf("cs: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cs, cs_a, 100 * (speeds.cs - cs_a) / cs_a);
   if (!speed_note.empty()) std::printf("wave speeds: %s\n", speed_note.c_str());
-  std::printf("energy drift after the pulse: %.2e; wall %.1f s (%.0f steps/s)\n", stats.energy_drift,
+  std::printf("energy drift after the pulse: %.2e; wall %.1f s (%.0f steps/s)\n", stats.energy.drift(),
               stats.wall_seconds, static_cast<double>(stats.steps) / stats.wall_seconds);
   std::printf("results in %s: summary.json, probes.csv, energy.csv, %s (open in ParaView)\n", opt.out.c_str(),
               xdmf.filename().c_str());
@@ -131,6 +131,6 @@ int main(int argc, char** argv) {
     so.precision = opt.precision;
     so.steps = opt.steps;
     const auto scene = pm::io::load_mps_elastic_scene(opt.scene, so);
-    return scene.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
+    return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

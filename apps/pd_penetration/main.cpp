@@ -17,28 +17,26 @@ namespace np = polymech::nosb_pd;
 
 namespace {
 
-// The measured residual velocity of the experiment at this impact velocity, where the report gives one.
-double experiment_residual(double v0) { return std::abs(v0 - 303.5) < 0.05 ? 200.6 : NAN; }
-
 template <class T, int D>
 int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& opt, const std::string& argv0) {
   const np::Config& c = scene.config;
   pm::io::make_output_dir(opt.out);
-  np::NosbPd<T, D> model(c);
+  np::Impact<T, D> model(c);
+  const np::NosbPd<T, D>& plate = model.plate();
   const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.end_time / c.dt));
   std::fprintf(stderr,
                "[pd_penetration] %s\n  accuracy %s (spacing %.3g m, m = %g), %s precision, %d particles, %lld bonds\n"
                "  v0 = %.1f m/s, c_v = %g, omega_v = %.3g rad/s, dt = %.3g s (limit %.3g s), up to %lld steps, %d threads\n",
-               scene.title.c_str(), scene.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.precision.c_str(),
-               model.particles(), static_cast<long long>(model.bonds()), c.projectile.velocity, c.stabilization.c_v,
+               scene.header.title.c_str(), scene.header.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.header.precision.c_str(),
+               plate.particles(), static_cast<long long>(plate.bonds()), c.projectile.velocity, c.stabilization.c_v,
                c.stabilization.omega_v, c.dt, scene.stable_dt, static_cast<long long>(steps), pm::kx::concurrency<pm::ExecSpace>());
 
   pm::io::SnapshotMesh mesh;
   mesh.dim = D;
-  mesh.points = model.host_fields().x0;
+  mesh.points = plate.host_fields().x0;
   pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
   auto snapshot = [&](std::int64_t step) {
-    const auto h = model.host_fields();
+    const auto h = plate.host_fields();
     std::vector<pm::io::SnapshotField> fields = {{"displacement", D, h.u}, {"velocity", D, h.v}};
     if (!h.damage.empty()) fields.push_back({"damage", 1, h.damage});
     if (!h.eps_p.empty()) fields.push_back({"plastic_strain", 1, h.eps_p});
@@ -54,8 +52,8 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   const np::RunStats stats = np::run_impact(model, steps, hooks, scene.stop_after_perforation);
   progress.done(stats.steps);
   if (stats.diverged)
-    std::fprintf(stderr, "[pd_penetration] the run diverged at step %lld (the energy tripled): no zero-energy control?\n",
-                 static_cast<long long>(stats.steps));
+    std::fprintf(stderr, "[pd_penetration] the run diverged at step %lld: %s (no zero-energy control?)\n",
+                 static_cast<long long>(stats.bad_step), stats.reason.c_str());
   const np::ImpactState impact = np::analyse_impact(model);
 
   // energy.csv and projectile.csv: the time series
@@ -77,22 +75,23 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   pm::io::write_csv(opt.out / "projectile.csv", {"time", "nose_position", "velocity", "reaction"}, p);
   const auto xdmf = snapshots.finish();
 
-  const double v0 = c.projectile.velocity, vexp = experiment_residual(v0);
+  const double v0 = c.projectile.velocity, vexp = scene.experiment_residual_velocity;
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json j = pm::apps::summary_header("pd_penetration", scene, c.effects);
+  nlohmann::json j = pm::apps::summary_header("pd_penetration", scene.header);
   j["command"] = argv0;
   j["initial_velocity"] = v0;
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
   j["perforated"] = impact.perforated;  // through and free of contact
   j["through"] = impact.through;        // nose more than a horizon below the plate (a plug may ride on it)
   j["diverged"] = stats.diverged;
+  if (stats.diverged) j["diverged_reason"] = stats.reason;
   j["experiment_residual_velocity"] = num(vexp);
   j["residual_velocity_error"] = num(stats.diverged ? NAN : impact.residual_velocity - vexp);
-  j["particles"] = model.particles();
-  j["bonds"] = model.bonds();
+  j["particles"] = plate.particles();
+  j["bonds"] = plate.bonds();
   j["broken_bonds"] = model.broken_bonds();
   j["wall_seconds"] = stats.wall_seconds;
-  j["short_range_list_builds"] = model.verlet_builds();  // neighbour searches of the contact list (skin)
+  j["short_range_list_builds"] = plate.verlet_builds();  // neighbour searches of the contact list (skin)
   j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["spacing"] = c.spacing;
   j["horizon_ratio"] = c.horizon_ratio;
@@ -102,7 +101,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   j["simulated_time"] = model.time();
   j["c_v"] = c.stabilization.c_v;
   j["omega_v"] = c.stabilization.omega_v;
-  j["critical_stretch"] = model.critical_stretch_value();
+  j["critical_stretch"] = plate.critical_stretch_value();
   j["plate"] = {{"core_damage", impact.core_damage}, {"rim_damage", impact.rim_damage}, {"max_damage", impact.max_damage},
                 {"plug_mass", impact.plug_mass}, {"plug_mass_nominal", impact.plug_mass_nominal}};
   const auto& last = stats.samples.back().energy;
@@ -151,7 +150,7 @@ int main(int argc, char** argv) {
     so.velocity = velocity;
     so.c_v = cv;
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
-    const bool f = scene.precision == "float";
+    const bool f = scene.header.precision == "float";
     if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, command) : run_case<double, 2>(scene, opt, command);
     return f ? run_case<float, 3>(scene, opt, command) : run_case<double, 3>(scene, opt, command);
   });

@@ -21,19 +21,14 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
   np::Config& c = scene.config;
   pm::io::make_output_dir(opt.out);
   if (identify) {
-    // eq. (3) needs vbar: the effect is enabled with c_v = 0 (no force); no damping, no other control
-    std::vector<std::string> eff = {"velocity_viscosity"};
-    if (c.effects.has("weighted_function")) eff.push_back("weighted_function");
-    c.effects = pm::EffectSet::resolve(eff, np::NosbPd<T, D>::effects());
-    c.stabilization.c_v = 0.0;
-    c.stabilization.omega_v = 1.0;
-    c.mass_damping = 0.0;
+    c = np::omega_v_identification(c);
+    scene.header.effects = c.effects;  // what ran
   }
   np::NosbPd<T, D> model(c);
   std::fprintf(stderr, "[pd_tension] %s\n  accuracy %s (spacing %.3g m, m = %g), %s, %d particles, %lld bonds, dt %.3g s\n",
-               scene.title.c_str(), scene.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.precision.c_str(), model.particles(),
+               scene.header.title.c_str(), scene.header.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.header.precision.c_str(), model.particles(),
                static_cast<long long>(model.bonds()), c.dt);
-  nlohmann::json j = pm::apps::summary_header("pd_tension", scene, c.effects);
+  nlohmann::json j = pm::apps::summary_header("pd_tension", scene.header);
   j["spacing"] = c.spacing;
   j["horizon_ratio"] = c.horizon_ratio;
   j["particles"] = model.particles();
@@ -92,7 +87,7 @@ int main(int argc, char** argv) {
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
     if (scene.config.loading != np::Loading::tension)
       throw pm::io::SceneError(opt.scene.string() + ": loading.kind must be \"tension\" for pd_tension");
-    const bool f = scene.precision == "float";
+    const bool f = scene.header.precision == "float";
     if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, identify) : run_case<double, 2>(scene, opt, identify);
     return f ? run_case<float, 3>(scene, opt, identify) : run_case<double, 3>(scene, opt, identify);
   });

@@ -2,11 +2,10 @@
 // normal n = (-t3, t1) pointing from the lower face S- to the upper face S+. A bond (a, b) is cut when
 // its end points lie on different sides and it crosses the line within the segment. A point exactly
 // on the line counts as S+, so a crack through a row of particles acts as if it ran just below it.
+// Host code (the crack is cut at set-up), free of Kokkos.
 #pragma once
 
 #include <cmath>
-
-#include "core/kokkos_shim.hpp"
 
 namespace polymech::contact {
 
@@ -30,12 +29,12 @@ struct CrackSegment {
     return s;
   }
 
-  KOKKOS_INLINE_FUNCTION double side(double x1, double x3) const { return (x1 - c1) * n1 + (x3 - c3) * n3; }
-  KOKKOS_INLINE_FUNCTION bool upper(double x1, double x3) const { return side(x1, x3) >= 0.0; }
-  KOKKOS_INLINE_FUNCTION double along(double x1, double x3) const { return (x1 - c1) * t1 + (x3 - c3) * t3; }
+  double side(double x1, double x3) const { return (x1 - c1) * n1 + (x3 - c3) * n3; }
+  bool upper(double x1, double x3) const { return side(x1, x3) >= 0.0; }
+  double along(double x1, double x3) const { return (x1 - c1) * t1 + (x3 - c3) * t3; }
 
   // Does the bond a -> b cross the crack segment?
-  KOKKOS_INLINE_FUNCTION bool cuts(double a1, double a3, double b1, double b3) const {
+  bool cuts(double a1, double a3, double b1, double b3) const {
     const double sa = side(a1, a3), sb = side(b1, b3);
     if ((sa >= 0.0) == (sb >= 0.0)) return false;
     const double w = sa / (sa - sb);  // where the bond meets the line

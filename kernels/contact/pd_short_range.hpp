@@ -12,7 +12,7 @@
 
 #include "core/small_math.hpp"
 #include "core/types.hpp"
-#include "neighbors/neighbor_list.hpp"
+#include "neighbors/neighbor_loop.hpp"
 
 namespace polymech::contact {
 
@@ -35,42 +35,61 @@ struct ShortRangeParams {
 
 // Kernel "polymech::contact::pd_short_range": a_i += L_i / rho.
 template <class T, int D>
+struct ShortRangeForce {
+  VecView<T, D> y;
+  View1<T> volume;
+  VecView<T, D> a;
+  T ds, c, inv_rho;
+  struct Accumulator {
+    Vec<T, D> yi, L;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(y, i), Vec<T, D>::zero()}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
+    const Vec<T, D> d = load<D>(y, j) - acc.yi;
+    const T r2 = norm2(d);
+    if (r2 >= ds * ds || !(r2 > T(0))) return;
+    const T r = kx::sqrt(r2);
+    acc.L -= (c * (ds - r) * volume(j) / r) * d;
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+    for (int k = 0; k < D; ++k) a(i, k) += inv_rho * acc.L[k];
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.L += from.L; }
+};
+
+template <class T, int D>
 void pd_short_range(const neighbors::NeighborList& list, const VecView<T, D>& y, const View1<T>& volume,
                     const ShortRangeParams<T>& p, const VecView<T, D>& a) {
-  const T ds = p.distance, c = p.coefficient / p.distance, inv_rho = T(1) / p.density;
-  Kokkos::parallel_for(
-      "polymech::contact::pd_short_range", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const Vec<T, D> yi = load<D>(y, i);
-        auto L = Vec<T, D>::zero();
-        for (Offset k = list.begin(i); k < list.end(i); ++k) {
-          const Index j = list.neighbor(k);
-          const Vec<T, D> d = load<D>(y, j) - yi;
-          const T r2 = norm2(d);
-          if (r2 >= ds * ds || !(r2 > T(0))) continue;
-          const T r = kx::sqrt(r2);
-          L -= (c * (ds - r) * volume(j) / r) * d;
-        }
-        for (int k = 0; k < D; ++k) a(i, k) += inv_rho * L[k];
-      });
+  neighbors::for_each_row("polymech::contact::pd_short_range", list,
+                          ShortRangeForce<T, D>{y, volume, a, p.distance, p.coefficient / p.distance, T(1) / p.density});
 }
 
 // Potential energy of the short-range springs, sum over pairs of c_s V_i V_j (d_s - r)^2 / (2 d_s);
 // per particle half of its pairs' energy into e[i] (a full list holds each pair twice).
 template <class T, int D>
+struct ShortRangeEnergy {
+  VecView<T, D> y;
+  View1<T> volume;
+  View1<T> e;
+  T ds, c;
+  struct Accumulator {
+    Vec<T, D> yi;
+    T s;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(y, i), T(0)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset) const {
+    const T r = norm(load<D>(y, j) - acc.yi);
+    if (r < ds) acc.s += T(0.25) * c * volume(i) * volume(j) * (ds - r) * (ds - r);
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { e(i) = acc.s; }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.s += from.s; }
+};
+
+template <class T, int D>
 void pd_short_range_energy(const neighbors::NeighborList& list, const VecView<T, D>& y, const View1<T>& volume,
                            const ShortRangeParams<T>& p, const View1<T>& e) {
-  const T ds = p.distance, c = p.coefficient / p.distance;
-  Kokkos::parallel_for(
-      "polymech::contact::pd_short_range_energy", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const Vec<T, D> yi = load<D>(y, i);
-        T s = T(0);
-        for (Offset k = list.begin(i); k < list.end(i); ++k) {
-          const Index j = list.neighbor(k);
-          const T r = norm(load<D>(y, j) - yi);
-          if (r < ds) s += T(0.25) * c * volume(i) * volume(j) * (ds - r) * (ds - r);
-        }
-        e(i) = s;
-      });
+  neighbors::for_each_row("polymech::contact::pd_short_range_energy", list,
+                          ShortRangeEnergy<T, D>{y, volume, e, p.distance, p.coefficient / p.distance});
 }
 
 }  // namespace polymech::contact

@@ -6,11 +6,12 @@
 //    `position[D-1]`, body up to `position[D-1] + length`; radius `radius`;
 //  - sphere (a disc in 2D): centre `position`, radius `radius`.
 // One pass over all particles (O(N), no search); the reaction is summed in a thread-count
-// independent order by the caller (pd::ordered_sum over `force`).
+// independent order by the caller (particles::vector_sum over `force`).
 #pragma once
 
 #include "core/small_math.hpp"
 #include "core/types.hpp"
+#include "particles/reductions.hpp"
 
 namespace polymech::contact {
 
@@ -80,6 +81,20 @@ void projectile_penalty(const RigidProjectile<T, D>& q, T stiffness, T contact_r
           for (int k = 0; k < D; ++k) a(i, k) += inv_m * fi[k];
         }
       });
+}
+
+// sum_i |f_i|^2 / (2 k): energy stored in the penalty springs of the contact forces f_i.
+template <class T, int D>
+double penalty_energy(const VecView<T, D>& force, double stiffness) {
+  const double inv2k = 0.5 / stiffness;
+  const auto s = particles::ordered_sum<1>(
+      "polymech::contact::penalty_energy", static_cast<std::int64_t>(force.extent(0)),
+      KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
+        double f2 = 0;
+        for (int k = 0; k < D; ++k) f2 += double(force(i, k)) * double(force(i, k));
+        acc[0] += f2 * inv2k;
+      });
+  return s[0];
 }
 
 }  // namespace polymech::contact

@@ -1,6 +1,7 @@
 // Execution/memory spaces and View aliases shared by every kernel.
 #pragma once
 
+#include "core/index.hpp"
 #include "core/kokkos_shim.hpp"
 
 #include <cstdint>
@@ -16,11 +17,6 @@ using MemSpace = ExecSpace::memory_space;
 using HostSpace = Kokkos::HostSpace;
 using HostExec = Kokkos::DefaultHostExecutionSpace;
 
-// Particle and bond indices: 32 bits is enough for the sizes this project runs (2e6 particles,
-// ~3e7 bonds) and halves the index traffic of neighbour lists compared with 64 bits.
-using Index = std::int32_t;
-// CSR offsets can exceed 2^31 for 3D lists of 1e7+ particles; keep them 64-bit.
-using Offset = std::int64_t;
 
 template <class T>
 using View1 = Kokkos::View<T*, MemSpace>;

@@ -13,12 +13,9 @@
 #include <vector>
 
 #include "core/kokkos_shim.hpp"
+#include "fem/orders.hpp"
 
 namespace polymech::fem {
-
-// Orders of the hexahedral elements the kernels are instantiated for.
-inline constexpr int min_order = 1;
-inline constexpr int max_order = 4;
 
 namespace detail {
 

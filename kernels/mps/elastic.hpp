@@ -1,6 +1,6 @@
 // Elastic-wave MPS in 2D plane strain (seed 000 §2.3 and §3): relative displacement with particle
 // rotation, volumetric strain, the translational equation (11), the rotational equation (12) and
-// symplectic Euler (13)-(16).
+// the rotation part of symplectic Euler (15)-(16) (eqs. (13)-(14): particles::symplectic_euler).
 //
 // State is the displacement u from the reference lattice x0, not the position: with nanometre waves
 // in a 0.1 m plate, positions in float would lose the signal entirely, while u keeps full relative
@@ -12,6 +12,8 @@
 #pragma once
 
 #include "mps/weight.hpp"
+#include "neighbors/neighbor_loop.hpp"
+#include "particles/particle_set.hpp"
 
 namespace polymech::mps {
 
@@ -27,13 +29,11 @@ struct ElasticParams {
   T inertia;  // particle moment of inertia I
 };
 
+// The particle set (x0: reference positions r0_i, u, v, a = dv/dt; no per-particle volume: every
+// particle stands for one l0 x l0 cell) and the MPS state beside it.
 template <class T>
-struct ElasticFields {
-  VecView<T, 2> x0;  // reference positions r0_i
+struct ElasticFields : particles::ParticleSet<T, 2> {
   View1<T> inv_r0;   // 1 / |r0_ij| per bond of the family (aligned with family.neighbors)
-  VecView<T, 2> u;   // displacement
-  VecView<T, 2> v;   // velocity
-  VecView<T, 2> a;   // acceleration dv/dt
   View1<T> e;        // volumetric strain <div u>_i
   // rotation effect only (empty Views otherwise)
   View1<T> theta;     // particle rotation angle
@@ -99,30 +99,59 @@ struct ElasticPair {
 
 // 1/|r0_ij| for every bond of the reference family (set-up, once).
 template <class T>
+struct ReferenceBondLengths {
+  ElasticFields<T> f;
+  struct Accumulator {
+    Vec2<T> xi;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<2>(f.x0, i)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    f.inv_r0(k) = T(1) / norm(load<2>(f.x0, j) - acc.xi);
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator&, const Accumulator&) {}
+};
+
+template <class T>
 void reference_bond_lengths(const neighbors::BondFamily& family, const ElasticFields<T>& f) {
-  Kokkos::parallel_for(
-      "polymech::mps::reference_bond_lengths", range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        for (Offset k = family.begin(i); k < family.end(i); ++k)
-          f.inv_r0(k) = T(1) / norm(load<2>(f.x0, family.neighbor(k)) - load<2>(f.x0, i));
-      });
+  neighbors::for_each_row("polymech::mps::reference_bond_lengths", family, ReferenceBondLengths<T>{f});
 }
+
+// The shape every MPS pair sum shares: i's state loaded once, a scalar summed over its pairs, the term
+// of one pair computed by Derived::term from the ElasticPair (CRTP: no virtual calls in kernels).
+template <class T, bool Rotation, class Derived>
+struct ElasticPairSum {
+  ElasticFields<T> f;
+  T re;
+  struct Accumulator {
+    ParticleState<T, Rotation> pi;
+    T s;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {ParticleState<T, Rotation>(f, i), T(0)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    const ElasticPair<T, Rotation> q(acc.pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
+    acc.s += Derived::term(q);
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.s += from.s; }
+};
 
 // <div u>_i = d/n0 sum u_ij . r_ij / (|r0_ij| |r_ij|) w  (eq. (4), difference form, with eq. (6)).
 template <class T, bool Rotation>
-void volumetric_strain(const neighbors::BondFamily& family, const ElasticFields<T>& f, const ElasticParams<T>& p) {
-  const T c = T(2) / p.n0;
-  const T re = p.re;
-  Kokkos::parallel_for(
-      Rotation ? "polymech::mps::volumetric_strain_with_rotation" : "polymech::mps::volumetric_strain",
-      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const ParticleState<T, Rotation> pi(f, i);
-        T s = T(0);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const ElasticPair<T, Rotation> q(pi, ParticleState<T, Rotation>(f, family.neighbor(k)), f.inv_r0(k), re);
-          s += dot(q.uij, q.r) * q.w * q.inv_r0 * q.inv_r;
-        }
-        f.e(i) = c * s;
-      });
+struct VolumetricStrain : ElasticPairSum<T, Rotation, VolumetricStrain<T, Rotation>> {
+  T c;
+  KOKKOS_INLINE_FUNCTION static T term(const ElasticPair<T, Rotation>& q) { return dot(q.uij, q.r) * q.w * q.inv_r0 * q.inv_r; }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, typename VolumetricStrain::Accumulator& acc) const { this->f.e(i) = c * acc.s; }
+};
+
+template <class T, bool Rotation, class Strategy = neighbors::SerialNeighbors>
+void volumetric_strain(const neighbors::BondFamily& family, const ElasticFields<T>& f, const ElasticParams<T>& p,
+                       Strategy strategy = {}) {
+  VolumetricStrain<T, Rotation> physics;
+  physics.f = f;
+  physics.re = p.re;
+  physics.c = T(2) / p.n0;
+  neighbors::for_each_row(Rotation ? "polymech::mps::volumetric_strain_with_rotation" : "polymech::mps::volumetric_strain",
+                          family, physics, strategy);
 }
 
 // seed 000 eq. (11): rho dv/dt = C13 div((div u) I) + 2 C55 lap u, with the symmetric divergence
@@ -131,46 +160,45 @@ void volumetric_strain(const neighbors::BondFamily& family, const ElasticFields<
 // its moment M = (r_i - r_j) x F_ij is returned to the two particles' spins, I dw_i/dt = -M/2 each,
 // so the total (orbital + spin) angular momentum is conserved.
 template <class T, bool Rotation>
-void elastic_acceleration(const neighbors::BondFamily& family, const ElasticFields<T>& f,
-                          const ElasticParams<T>& p) {
-  const T re = p.re;
-  const T c_vol = p.c13 * T(2) / (p.n0 * p.rho);            // C13 d / (n0 rho)
-  const T c_lap = T(2) * p.c55 * T(4) / (p.n0 * p.rho);     // 2 C55 2d / (n0 rho)
-  const T c_rot = T(0.5) * p.mass / p.inertia * c_lap;     // (m / I) * 1/2
-  Kokkos::parallel_for(
-      Rotation ? "polymech::mps::elastic_acceleration_with_rotation" : "polymech::mps::elastic_acceleration",
-      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const ParticleState<T, Rotation> pi(f, i);
-        const T ei = f.e(i);
-        auto vol = Vec2<T>::zero();
-        auto lap = Vec2<T>::zero();
-        T moment = T(0);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const Index j = family.neighbor(k);
-          const ElasticPair<T, Rotation> q(pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
-          vol += ((ei + f.e(j)) * q.w * q.inv_r0 * q.inv_r) * q.r;
-          const Vec2<T> shear = (q.w * q.inv_r0 * q.inv_r0) * q.uij;
-          lap += shear;
-          if constexpr (Rotation) moment += cross(q.r, shear);
-        }
-        store<2>(f.a, i, c_vol * vol + c_lap * lap);
-        // plain if: nvcc forbids an extended lambda's first capture (c_rot) inside if constexpr; the
-        // branch is still compiled out when Rotation is false
-        if (Rotation) f.alpha(i) = c_rot * moment;
-      });
-}
+struct ElasticAcceleration {
+  ElasticFields<T> f;
+  T re, c_vol, c_lap, c_rot;
+  struct Accumulator {
+    ParticleState<T, Rotation> pi;
+    T ei;
+    Vec2<T> vol, lap;
+    T moment;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
+    return {ParticleState<T, Rotation>(f, i), f.e(i), Vec2<T>::zero(), Vec2<T>::zero(), T(0)};
+  }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    const ElasticPair<T, Rotation> q(acc.pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
+    acc.vol += ((acc.ei + f.e(j)) * q.w * q.inv_r0 * q.inv_r) * q.r;
+    const Vec2<T> shear = (q.w * q.inv_r0 * q.inv_r0) * q.uij;
+    acc.lap += shear;
+    if constexpr (Rotation) acc.moment += cross(q.r, shear);
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+    store<2>(f.a, i, c_vol * acc.vol + c_lap * acc.lap);
+    if constexpr (Rotation) f.alpha(i) = c_rot * acc.moment;
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) {
+    into.vol += from.vol;
+    into.lap += from.lap;
+    into.moment += from.moment;
+  }
+};
 
-// seed 000 eqs. (13)-(14): v^{k+1} = v^k + dt a;  r^{k+1} = r^k + dt v^{k+1} (on u).
-template <class T>
-void symplectic_euler(const ElasticFields<T>& f, T dt) {
-  Kokkos::parallel_for(
-      "polymech::mps::symplectic_euler", range(static_cast<std::int64_t>(f.u.extent(0))),
-      KOKKOS_LAMBDA(const std::int64_t i) {
-        for (int k = 0; k < 2; ++k) {
-          f.v(i, k) += dt * f.a(i, k);
-          f.u(i, k) += dt * f.v(i, k);
-        }
-      });
+template <class T, bool Rotation, class Strategy = neighbors::SerialNeighbors>
+void elastic_acceleration(const neighbors::BondFamily& family, const ElasticFields<T>& f, const ElasticParams<T>& p,
+                          Strategy strategy = {}) {
+  const T c_vol = p.c13 * T(2) / (p.n0 * p.rho);         // C13 d / (n0 rho)
+  const T c_lap = T(2) * p.c55 * T(4) / (p.n0 * p.rho);  // 2 C55 2d / (n0 rho)
+  const T c_rot = T(0.5) * p.mass / p.inertia * c_lap;  // (m / I) * 1/2
+  neighbors::for_each_row(
+      Rotation ? "polymech::mps::elastic_acceleration_with_rotation" : "polymech::mps::elastic_acceleration", family,
+      ElasticAcceleration<T, Rotation>{f, p.re, c_vol, c_lap, c_rot}, strategy);
 }
 
 // seed 000 eqs. (15)-(16): omega^{k+1} = omega^k + dt (dw/dt)_sum;  theta^{k+1} = theta^k + dt omega^{k+1}.
@@ -209,6 +237,12 @@ struct ElasticEnergy {
   double total() const { return kinetic + strain; }
 };
 
+// sum_j w / |r0_ij|^2 |u_ij|^2 over the row of i.
+template <class T, bool Rotation>
+struct PairStrainEnergy : ElasticPairSum<T, Rotation, PairStrainEnergy<T, Rotation>> {
+  KOKKOS_INLINE_FUNCTION static T term(const ElasticPair<T, Rotation>& q) { return q.w * q.inv_r0 * q.inv_r0 * norm2(q.uij); }
+};
+
 template <class T, bool Rotation>
 ElasticEnergy elastic_energy(const neighbors::BondFamily& family, const ElasticFields<T>& f,
                              const ElasticParams<T>& p) {
@@ -219,22 +253,22 @@ ElasticEnergy elastic_energy(const neighbors::BondFamily& family, const ElasticF
       "polymech::mps::kinetic_energy", range(family.num_particles),
       KOKKOS_LAMBDA(const Index i, T& s) {
         s += T(0.5) * m * (f.v(i, 0) * f.v(i, 0) + f.v(i, 1) * f.v(i, 1));
-        if (Rotation) s += T(0.5) * inertia * f.omega(i) * f.omega(i);  // not constexpr: see elastic_acceleration
+        // plain if: nvcc forbids an extended lambda's first capture (inertia) inside if constexpr
+        if (Rotation) s += T(0.5) * inertia * f.omega(i) * f.omega(i);
       },
       kinetic);
-  const T re = p.re;
   const T k_vol = T(0.5) * m * p.c13 / p.rho;
   const T k_lap = T(0.25) * m * T(2) * p.c55 * T(4) / (p.rho * p.n0);
+  PairStrainEnergy<T, Rotation> pairs;
+  pairs.f = f;
+  pairs.re = p.re;
   T strain = T(0);
   Kokkos::parallel_reduce(
       "polymech::mps::strain_energy", range(family.num_particles),
       KOKKOS_LAMBDA(const Index i, T& s) {
-        T pairs = T(0);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const ElasticPair<T, Rotation> q(f, i, family.neighbor(k), k, re);
-          pairs += q.w * q.inv_r0 * q.inv_r0 * norm2(q.uij);
-        }
-        s += k_vol * f.e(i) * f.e(i) + k_lap * pairs;
+        auto acc = pairs.start(i);
+        neighbors::gather_row(family, i, pairs, acc);
+        s += k_vol * f.e(i) * f.e(i) + k_lap * acc.s;
       },
       strain);
   out.kinetic = static_cast<double>(kinetic);

@@ -26,26 +26,31 @@ struct ProbeStencil {
 // divergence is the model's volumetric strain e; the rotation is 1/2 curl u from the gradient model
 // (seed 000 eq. (3)) on the raw displacement, so it measures the S wave whether or not the
 // `rotation` effect is on; theta is the particles' own rotation (0 without the effect).
+// sum_j (r_ij x u_ij) w / (|r0_ij| |r_ij|) over the row of i: twice the curl of eq. (3) times n0 / d.
+template <class T>
+struct CurlSum : ElasticPairSum<T, false, CurlSum<T>> {
+  KOKKOS_INLINE_FUNCTION static T term(const ElasticPair<T, false>& q) { return cross(q.r, q.uij) * q.w * q.inv_r0 * q.inv_r; }
+};
+
 template <class T, bool Rotation>
 void sample_probes(const ProbeStencil<T>& stencil, const neighbors::BondFamily& family, const ElasticFields<T>& f,
                    const ElasticParams<T>& p, const View2<T>& record, std::int64_t slot) {
-  const T c = T(2) / p.n0, re = p.re;
+  const T c = T(2) / p.n0;
+  CurlSum<T> curl_sum;
+  curl_sum.f = f;
+  curl_sum.re = p.re;
   Kokkos::parallel_for(
       "polymech::mps::sample_probes", range(stencil.count()), KOKKOS_LAMBDA(const int probe) {
         T acc[probe_field_count] = {};
         for (Offset s = stencil.offsets(probe); s < stencil.offsets(probe + 1); ++s) {
           const Index i = stencil.particles(s);
           const T wgt = stencil.weights(s);
-          T curl = T(0);
-          for (Offset k = family.begin(i); k < family.end(i); ++k) {
-            const Index j = family.neighbor(k);
-            const ElasticPair<T, false> q(f, i, j, k, re);
-            curl += cross(q.r, q.uij) * q.w * q.inv_r0 * q.inv_r;
-          }
+          auto row = curl_sum.start(i);
+          neighbors::gather_row(family, i, curl_sum, row);
           acc[probe_u1] += wgt * f.u(i, 0);
           acc[probe_u3] += wgt * f.u(i, 1);
           acc[probe_divergence] += wgt * f.e(i);
-          acc[probe_rotation] += wgt * T(0.5) * c * curl;
+          acc[probe_rotation] += wgt * T(0.5) * c * row.s;
           if constexpr (Rotation) acc[probe_theta] += wgt * f.theta(i);
         }
         for (int k = 0; k < probe_field_count; ++k) record(slot, probe * probe_field_count + k) = acc[k];

@@ -5,7 +5,7 @@
 
 #include "core/small_math.hpp"
 #include "core/types.hpp"
-#include "neighbors/neighbor_list.hpp"
+#include "neighbors/neighbor_loop.hpp"
 
 namespace polymech::mps {
 
@@ -19,17 +19,25 @@ KOKKOS_INLINE_FUNCTION T weight(T r, T re) {
 
 // seed 000 eq. (2): n_i = sum_{j != i} w(|r_j - r_i|), over the neighbour family of i.
 template <class T, int D>
+struct NumberDensity {
+  VecView<T, D> x;
+  T re;
+  View1<T> n;
+  struct Accumulator {
+    Vec<T, D> xi;
+    T sum;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(x, i), T(0)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
+    acc.sum += weight(norm(load<D>(x, j) - acc.xi), re);
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { n(i) = acc.sum; }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.sum += from.sum; }
+};
+
+template <class T, int D>
 void number_density(const neighbors::NeighborList& family, const VecView<T, D>& x, T re, const View1<T>& n) {
-  Kokkos::parallel_for(
-      "polymech::mps::number_density", range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const auto xi = load<D>(x, i);
-        T sum = T(0);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const Index j = family.neighbor(k);
-          sum += weight(norm(load<D>(x, j) - xi), re);
-        }
-        n(i) = sum;
-      });
+  neighbors::for_each_row("polymech::mps::number_density", family, NumberDensity<T, D>{x, re, n});
 }
 
 // n0 as the paper defines it: the mean initial number density over all particles (seed 000 §2.1).

@@ -1,13 +1,46 @@
-// Remove bonds from a CSR list: keeps the pairs (i, j) for which keep(i, j) is true, in the same
-// order. Used to cut a reference family along a crack (seed 000 §4: the elastic operators do not act
-// across the crack faces), or to drop any other set of bonds decided at set-up.
+// Remove bonds from a CSR list: keeps the bonds k = (i, j) for which keep(i, j, k) is true, in the
+// same order. Used to cut a reference family along a crack (seed 000 §4: the elastic operators do not
+// act across the crack faces), or to drop any other set of bonds decided at set-up.
 #pragma once
 
-#include "neighbors/neighbor_list.hpp"
+#include "neighbors/neighbor_loop.hpp"
 
 namespace polymech::neighbors {
 
-// keep: a device-callable functor bool(Index i, Index j).
+namespace detail {
+
+template <class Keep>
+struct FilterCount {
+  NeighborList src;
+  Keep keep;
+  Kokkos::View<Offset*, MemSpace> offsets;
+  struct Accumulator {
+    Offset count;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {0}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const { acc.count += keep(i, j, k) ? 1 : 0; }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { offsets(i + 1) = acc.count; }
+};
+
+template <class Keep>
+struct FilterFill {
+  NeighborList src;
+  Keep keep;
+  Kokkos::View<Offset*, MemSpace> offsets;
+  Kokkos::View<Index*, MemSpace> neighbors;
+  struct Accumulator {
+    Offset slot;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {offsets(i)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const {
+    if (keep(i, j, k)) neighbors(acc.slot++) = j;
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+};
+
+}  // namespace detail
+
+// keep: a device-callable functor bool(Index i, Index j, Offset k).
 template <class Keep>
 NeighborList filter_bonds(const NeighborList& in, const Keep& keep) {
   NeighborList out;
@@ -17,13 +50,7 @@ NeighborList filter_bonds(const NeighborList& in, const Keep& keep) {
   out.kind = in.kind;
   out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::filtered_offsets", static_cast<std::size_t>(n) + 1);
   auto offsets = out.offsets;
-  const NeighborList src = in;
-  Kokkos::parallel_for(
-      "polymech::neighbors::filter_count", range(n), KOKKOS_LAMBDA(const Index i) {
-        Offset c = 0;
-        for (Offset k = src.begin(i); k < src.end(i); ++k) c += keep(i, src.neighbor(k)) ? 1 : 0;
-        offsets(i + 1) = c;
-      });
+  for_each_row("polymech::neighbors::filter_count", in, detail::FilterCount<Keep>{in, keep, offsets});
   Offset total = 0;
   Kokkos::parallel_scan(
       "polymech::neighbors::filter_scan", range(static_cast<std::int64_t>(n) + 1),
@@ -35,15 +62,7 @@ NeighborList filter_bonds(const NeighborList& in, const Keep& keep) {
   out.neighbors = Kokkos::View<Index*, MemSpace>(
       Kokkos::view_alloc(Kokkos::WithoutInitializing, "polymech::neighbors::filtered_neighbors"),
       static_cast<std::size_t>(total));
-  auto neighbors = out.neighbors;
-  Kokkos::parallel_for(
-      "polymech::neighbors::filter_fill", range(n), KOKKOS_LAMBDA(const Index i) {
-        Offset slot = offsets(i);
-        for (Offset k = src.begin(i); k < src.end(i); ++k) {
-          const Index j = src.neighbor(k);
-          if (keep(i, j)) neighbors(slot++) = j;
-        }
-      });
+  for_each_row("polymech::neighbors::filter_fill", in, detail::FilterFill<Keep>{in, keep, offsets, out.neighbors});
   out.num_pairs = total;
   return out;
 }

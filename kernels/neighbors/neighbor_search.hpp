@@ -16,55 +16,102 @@ namespace polymech::neighbors {
 
 namespace detail {
 
-// Visit every particle j in the 3^D cells around x_i whose distance to x_i is <= radius (j != i,
-// and j > i for half lists), in a fixed order: cells lexicographically, then ascending index.
+// Visit every point j of x in the 3^D cells around the position xi whose distance to xi is <= radius,
+// except `self` and, for half lists, j < self, in a fixed order: cells lexicographically (the first
+// coordinate fastest), then ascending index.
 template <class T, int D, class PositionView, class Visit>
-KOKKOS_INLINE_FUNCTION void for_each_candidate(const CellGrid<T, D>& grid, const PositionView& x, Index i,
-                                               T radius2, bool half, Visit&& visit) {
-  Vec<T, D> xi;
-  std::int64_t c[D];
+KOKKOS_INLINE_FUNCTION void for_each_point_near(const CellGrid<T, D>& grid, const PositionView& x, const Vec<T, D>& xi,
+                                                Index self, T radius2, bool half, Visit&& visit) {
+  std::int64_t lo[D], hi[D], cc[D];
   for (int k = 0; k < D; ++k) {
-    xi[k] = x(i, k);
-    c[k] = grid.cell_coord(xi[k], k);
+    const std::int64_t c = grid.cell_coord(xi[k], k);
+    lo[k] = c > 0 ? c - 1 : 0;
+    hi[k] = c + 1 < grid.dims[k] ? c + 1 : grid.dims[k] - 1;
+    cc[k] = lo[k];
   }
-  std::int64_t lo[D], hi[D];
-  for (int k = 0; k < D; ++k) {
-    lo[k] = c[k] > 0 ? c[k] - 1 : 0;
-    hi[k] = c[k] + 1 < grid.dims[k] ? c[k] + 1 : grid.dims[k] - 1;
-  }
-  std::int64_t cc[D];
-  if constexpr (D == 2) {
-    for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
-      for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) {
-        const std::int64_t l = grid.linear(cc);
-        for (Offset a = grid.cell_start(l); a < grid.cell_start(l + 1); ++a) {
-          const Index j = grid.cell_particles(a);
-          if (j == i || (half && j < i)) continue;
-          T r2 = T(0);
-          for (int k = 0; k < D; ++k) {
-            const T d = x(j, k) - xi[k];
-            r2 += d * d;
-          }
-          if (r2 <= radius2) visit(j);
-        }
+  while (true) {
+    const std::int64_t l = grid.linear(cc);
+    for (Offset a = grid.cell_start(l); a < grid.cell_start(l + 1); ++a) {
+      const Index j = grid.cell_particles(a);
+      if (j == self || (half && j < self)) continue;
+      T r2 = T(0);
+      for (int k = 0; k < D; ++k) {
+        const T d = x(j, k) - xi[k];
+        r2 += d * d;
       }
-  } else {
-    for (cc[2] = lo[2]; cc[2] <= hi[2]; ++cc[2])
-      for (cc[1] = lo[1]; cc[1] <= hi[1]; ++cc[1])
-        for (cc[0] = lo[0]; cc[0] <= hi[0]; ++cc[0]) {
-          const std::int64_t l = grid.linear(cc);
-          for (Offset a = grid.cell_start(l); a < grid.cell_start(l + 1); ++a) {
-            const Index j = grid.cell_particles(a);
-            if (j == i || (half && j < i)) continue;
-            T r2 = T(0);
-            for (int k = 0; k < D; ++k) {
-              const T d = x(j, k) - xi[k];
-              r2 += d * d;
-            }
-            if (r2 <= radius2) visit(j);
-          }
-        }
+      if (r2 <= radius2) visit(j);
+    }
+    int k = 0;
+    while (k < D && ++cc[k] > hi[k]) {
+      cc[k] = lo[k];
+      ++k;
+    }
+    if (k == D) break;
   }
+}
+
+// offsets(i + 1) holds row i's count; turns them into row starts, returns the total. (A free
+// function: under CUDA a KOKKOS_LAMBDA may not sit in a private member.)
+inline Offset scan_offsets(const Kokkos::View<Offset*, MemSpace>& offsets, Index n) {
+  Offset total = 0;
+  Kokkos::parallel_scan(
+      "polymech::neighbors::scan", range(static_cast<std::int64_t>(n) + 1),
+      KOKKOS_LAMBDA(const std::int64_t i, Offset& partial, const bool final) {
+        const Offset c = i == 0 ? Offset(0) : offsets(i);
+        partial += c;
+        if (final) offsets(i) = partial;
+      },
+      total);
+  return total;
+}
+
+inline void reserve_neighbors(NeighborList& out, Offset total) {
+  if (out.neighbors.extent(0) < static_cast<std::size_t>(total))
+    out.neighbors = Kokkos::View<Index*, MemSpace>(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "polymech::neighbors::neighbors"),
+        static_cast<std::size_t>(total + total / 8 + 16));
+}
+
+// Query points of a search: a point set's own particles (excluding themselves) or another set.
+template <class T, int D>
+struct SelfQueries {
+  VecView<T, D> x;
+  KOKKOS_INLINE_FUNCTION Vec<T, D> position(Index i) const { return load<D>(x, i); }
+  KOKKOS_INLINE_FUNCTION Index self(Index i) const { return i; }
+};
+template <class T, int D>
+struct OtherQueries {
+  VecView<T, D> x;
+  KOKKOS_INLINE_FUNCTION Vec<T, D> position(Index i) const { return load<D>(x, i); }
+  KOKKOS_INLINE_FUNCTION Index self(Index) const { return Index(-1); }
+};
+
+// The rows of `out` for n queries against the binned points: count, scan, fill.
+template <class T, int D, class Queries>
+void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Queries& queries, Index n, T radius,
+               bool half, NeighborList& out) {
+  if (out.offsets.extent(0) < static_cast<std::size_t>(n) + 1)
+    out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::offsets", static_cast<std::size_t>(n) + 1);
+  const T radius2 = radius * radius;
+  auto offsets = out.offsets;
+  Kokkos::parallel_for(
+      "polymech::neighbors::count", range(n), KOKKOS_LAMBDA(const Index i) {
+        Offset count = 0;
+        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index) { ++count; });
+        offsets(i + 1) = count;
+      });
+  const Offset total = scan_offsets(offsets, n);
+  reserve_neighbors(out, total);
+  auto neighbors = out.neighbors;
+  Kokkos::parallel_for(
+      "polymech::neighbors::fill", range(n), KOKKOS_LAMBDA(const Index i) {
+        Offset slot = offsets(i);
+        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half,
+                                  [&](Index j) { neighbors(slot++) = j; });
+      });
+  out.num_particles = n;
+  out.num_pairs = total;
+  out.radius = static_cast<double>(radius);
 }
 
 }  // namespace detail
@@ -76,44 +123,20 @@ class NeighborSearch {
  public:
   // Lists every pair within `radius` of the positions x into `out` (resized only when it grows).
   void build(const VecView<T, D>& x, T radius, ListKind kind, NeighborList& out) {
-    const auto n = static_cast<Index>(x.extent(0));
     bin_particles<T, D>(grid_, x, radius);
-    if (out.offsets.extent(0) < static_cast<std::size_t>(n) + 1)
-      out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::offsets", static_cast<std::size_t>(n) + 1);
-
-    const CellGrid<T, D> grid = grid_;
-    const T radius2 = radius * radius;
-    const bool half = kind == ListKind::half;
-    auto offsets = out.offsets;
-    Kokkos::parallel_for(
-        "polymech::neighbors::count", range(n), KOKKOS_LAMBDA(const Index i) {
-          Offset count = 0;
-          detail::for_each_candidate<T, D>(grid, x, i, radius2, half, [&](Index) { ++count; });
-          offsets(i + 1) = count;
-        });
-    Offset total = 0;
-    Kokkos::parallel_scan(
-        "polymech::neighbors::scan", range(static_cast<std::int64_t>(n) + 1),
-        KOKKOS_LAMBDA(const std::int64_t i, Offset& partial, const bool final) {
-          const Offset c = i == 0 ? Offset(0) : offsets(i);
-          partial += c;
-          if (final) offsets(i) = partial;
-        },
-        total);
-    if (out.neighbors.extent(0) < static_cast<std::size_t>(total))
-      out.neighbors = Kokkos::View<Index*, MemSpace>(
-          Kokkos::view_alloc(Kokkos::WithoutInitializing, "polymech::neighbors::neighbors"),
-          static_cast<std::size_t>(total + total / 8 + 16));
-    auto neighbors = out.neighbors;
-    Kokkos::parallel_for(
-        "polymech::neighbors::fill", range(n), KOKKOS_LAMBDA(const Index i) {
-          Offset slot = offsets(i);
-          detail::for_each_candidate<T, D>(grid, x, i, radius2, half, [&](Index j) { neighbors(slot++) = j; });
-        });
-    out.num_particles = n;
-    out.num_pairs = total;
-    out.radius = static_cast<double>(radius);
+    detail::list_rows<T, D>(grid_, x, detail::SelfQueries<T, D>{x}, static_cast<Index>(x.extent(0)), radius,
+                            kind == ListKind::half, out);
     out.kind = kind;
+  }
+
+  // A search of one point set against another: for every query point i, the points j of `points`
+  // within `radius` (quadrature points against nodes, spheres against facets, fluid particles against
+  // wall integration points). Rows are ordered as in build(); the list is full by construction.
+  void build_between(const VecView<T, D>& queries, const VecView<T, D>& points, T radius, NeighborList& out) {
+    bin_particles<T, D>(grid_, points, radius);
+    detail::list_rows<T, D>(grid_, points, detail::OtherQueries<T, D>{queries}, static_cast<Index>(queries.extent(0)),
+                            radius, false, out);
+    out.kind = ListKind::full;
   }
 
   const CellGrid<T, D>& grid() const { return grid_; }

@@ -40,81 +40,100 @@ KOKKOS_INLINE_FUNCTION T shape_quality_of_scaled(const Mat<T, D>& Ks) {
 // The optional parts (bond tests, rate, mean velocity) are template flags so that the bond loop the
 // compiler sees has no branches but the bond test itself.
 template <class T, int D, bool Damage, bool Rate, bool Mean>
+struct DeformationGradient {
+  neighbors::BondFamily family;  // the rebuild pass of finish() walks the row again
+  Fields<T, D> f;
+  T sc, min_quality;
+  struct Accumulator {
+    Vec<T, D> xi0, ui, vi;
+    bool broke;
+    Mat<T, D> N;     // sum W (u_j - u_i) (x) xi
+    Mat<T, D> Ndot;  // sum W (v_j - v_i) (x) xi
+    Vec<T, D> vsum;
+    T w_intact, w_all;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
+    Accumulator acc{load<D>(f.x0, i), load<D>(f.u, i), Vec<T, D>::zero(), false, Mat<T, D>::zero(), Mat<T, D>::zero(),
+                    Vec<T, D>::zero(), T(0), T(0)};
+    if (Rate || Mean) acc.vi = load<D>(f.v, i);
+    return acc;
+  }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0;
+    const T w = f.bond_weight(k);
+    if (Damage) {
+      acc.w_all += w;
+      if (!f.bond_intact(k)) return;
+    }
+    const Vec<T, D> eta = load<D>(f.u, j) - acc.ui;
+    // stretch (|Y| - |xi|) / |xi| > sc  <=>  |Y|^2 > (1 + sc)^2 |xi|^2 (no square root); the
+    // same test from j's side gives the same answer, so both halves of a bond break together
+    if (Damage && norm2(xi + eta) > (T(1) + sc) * (T(1) + sc) * norm2(xi)) {
+      f.bond_intact(k) = 0;
+      acc.broke = true;
+      return;
+    }
+    const Vec<T, D> wxi = w * xi;
+    for (int r = 0; r < D; ++r)
+      for (int c = 0; c < D; ++c) acc.N.a[r][c] += eta[r] * wxi[c];
+    if (Rate) {
+      const Vec<T, D> dv = load<D>(f.v, j) - acc.vi;
+      for (int r = 0; r < D; ++r)
+        for (int c = 0; c < D; ++c) acc.Ndot.a[r][c] += dv[r] * wxi[c];
+    }
+    if (Mean) acc.vsum += w * load<D>(f.v, j);
+    if (Damage || Mean) acc.w_intact += w;
+  }
+  // K_i changes only when one of i's bonds breaks: it is kept (as K^-1) between passes and rebuilt
+  // from the intact bonds (a second pass over the row) when it is not known yet or a bond broke.
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+    const bool known = f.status(i) & status_shape_known;
+    Mat<T, D> kinv;
+    if (known && !acc.broke) {
+      kinv = load_mat<D>(f.kinv, i);
+    } else {
+      auto K = Mat<T, D>::zero();
+      int intact = 0;
+      for (Offset k = family.begin(i); k < family.end(i); ++k) {
+        if (Damage && !f.bond_intact(k)) continue;
+        const Vec<T, D> xi = load<D>(f.x0, family.neighbor(k)) - acc.xi0;
+        const T w = f.bond_weight(k);
+        for (int r = 0; r < D; ++r)
+          for (int c = 0; c < D; ++c) K.a[r][c] += w * xi[r] * xi[c];
+        ++intact;
+      }
+      const T scale = trace(K) / T(D);
+      const Mat<T, D> Ks = (scale > T(0) ? T(1) / scale : T(0)) * K;
+      const bool ok = intact > D && scale > T(0) && detail::shape_quality_of_scaled(Ks) > min_quality;
+      const bool crushed = f.status(i) & status_crushed;  // sticky (pd/stress.hpp)
+      f.status(i) = std::uint8_t(status_shape_known | (ok && !crushed ? 0 : status_failed) | (crushed ? status_crushed : 0));
+      kinv = ok ? (T(1) / scale) * inverse(Ks) : Mat<T, D>::zero();
+      store_mat<D>(f.kinv, i, kinv);
+    }
+    store_mat<D>(f.F, i, Mat<T, D>::identity() + acc.N * kinv);
+    if (Rate) store_mat<D>(f.Fdot, i, acc.Ndot * kinv);
+    if (Damage) f.damage(i) = acc.w_all > T(0) ? T(1) - acc.w_intact / acc.w_all : T(0);
+    if (Mean) {
+      // seed 003 eq. (3): int_H omega v' dV' / int_H omega dV' (zero-weight families: own velocity)
+      store<D>(f.vbar, i, acc.w_intact > T(0) ? (T(1) / acc.w_intact) * acc.vsum : acc.vi);
+      f.horizon_weight(i) = acc.w_intact;
+    }
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) {
+    into.broke = into.broke || from.broke;
+    into.N += from.N;
+    into.Ndot += from.Ndot;
+    into.vsum += from.vsum;
+    into.w_intact += from.w_intact;
+    into.w_all += from.w_all;
+  }
+};
+
+template <class T, int D, bool Damage, bool Rate, bool Mean>
 void deformation_gradient_pass(const neighbors::BondFamily& family, const Fields<T, D>& f, const DeformationParams<T>& p) {
-  const T sc = p.critical_stretch, min_quality = p.min_shape_quality;
-  Kokkos::parallel_for(
-      Damage ? "polymech::pd::deformation_gradient_with_damage" : "polymech::pd::deformation_gradient",
-      range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const Vec<T, D> xi0 = load<D>(f.x0, i);
-        const Vec<T, D> ui = load<D>(f.u, i);
-        Vec<T, D> vi = Vec<T, D>::zero();
-        if (Rate || Mean) vi = load<D>(f.v, i);
-        // K_i changes only when one of i's bonds breaks: it is kept (as K^-1) between passes and
-        // rebuilt from the intact bonds when it is not known yet or a bond broke in this pass
-        const bool known = f.status(i) & status_shape_known;
-        bool broke = false;
-        auto N = Mat<T, D>::zero();     // sum W (u_j - u_i) (x) xi
-        auto Ndot = Mat<T, D>::zero();  // sum W (v_j - v_i) (x) xi
-        auto vsum = Vec<T, D>::zero();
-        T w_intact = T(0), w_all = T(0);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const Index j = family.neighbor(k);
-          const Vec<T, D> xi = load<D>(f.x0, j) - xi0;
-          const T w = f.bond_weight(k);
-          if (Damage) {
-            w_all += w;
-            if (!f.bond_intact(k)) continue;
-          }
-          const Vec<T, D> eta = load<D>(f.u, j) - ui;
-          // stretch (|Y| - |xi|) / |xi| > sc  <=>  |Y|^2 > (1 + sc)^2 |xi|^2 (no square root); the
-          // same test from j's side gives the same answer, so both halves of a bond break together
-          if (Damage && norm2(xi + eta) > (T(1) + sc) * (T(1) + sc) * norm2(xi)) {
-            f.bond_intact(k) = 0;
-            broke = true;
-            continue;
-          }
-          const Vec<T, D> wxi = w * xi;
-          for (int r = 0; r < D; ++r)
-            for (int c = 0; c < D; ++c) N.a[r][c] += eta[r] * wxi[c];
-          if (Rate) {
-            const Vec<T, D> dv = load<D>(f.v, j) - vi;
-            for (int r = 0; r < D; ++r)
-              for (int c = 0; c < D; ++c) Ndot.a[r][c] += dv[r] * wxi[c];
-          }
-          if (Mean) vsum += w * load<D>(f.v, j);
-          if (Damage || Mean) w_intact += w;
-        }
-        Mat<T, D> kinv;
-        if (known && !broke) {
-          kinv = load_mat<D>(f.kinv, i);
-        } else {
-          auto K = Mat<T, D>::zero();
-          int intact = 0;
-          for (Offset k = family.begin(i); k < family.end(i); ++k) {
-            if (Damage && !f.bond_intact(k)) continue;
-            const Vec<T, D> xi = load<D>(f.x0, family.neighbor(k)) - xi0;
-            const T w = f.bond_weight(k);
-            for (int r = 0; r < D; ++r)
-              for (int c = 0; c < D; ++c) K.a[r][c] += w * xi[r] * xi[c];
-            ++intact;
-          }
-          const T scale = trace(K) / T(D);
-          const Mat<T, D> Ks = (scale > T(0) ? T(1) / scale : T(0)) * K;
-          const bool ok = intact > D && scale > T(0) && detail::shape_quality_of_scaled(Ks) > min_quality;
-          const bool crushed = f.status(i) & status_crushed;  // sticky (pd/stress.hpp)
-          f.status(i) = std::uint8_t(status_shape_known | (ok && !crushed ? 0 : status_failed) | (crushed ? status_crushed : 0));
-          kinv = ok ? (T(1) / scale) * inverse(Ks) : Mat<T, D>::zero();
-          store_mat<D>(f.kinv, i, kinv);
-        }
-        store_mat<D>(f.F, i, Mat<T, D>::identity() + N * kinv);
-        if (Rate) store_mat<D>(f.Fdot, i, Ndot * kinv);
-        if (Damage) f.damage(i) = w_all > T(0) ? T(1) - w_intact / w_all : T(0);
-        if (Mean) {
-          // seed 003 eq. (3): int_H omega v' dV' / int_H omega dV' (zero-weight families: own velocity)
-          store<D>(f.vbar, i, w_intact > T(0) ? (T(1) / w_intact) * vsum : vi);
-          f.horizon_weight(i) = w_intact;
-        }
-      });
+  neighbors::for_each_row(Damage ? "polymech::pd::deformation_gradient_with_damage" : "polymech::pd::deformation_gradient",
+                          family, DeformationGradient<T, D, Damage, Rate, Mean>{family, f, p.critical_stretch,
+                                                                               p.min_shape_quality});
 }
 
 // Kernel "polymech::pd::deformation_gradient" (or "..._with_damage" when bonds are tested).

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "pd/fields.hpp"
-#include "pd/reduce.hpp"
+#include "particles/reductions.hpp"
 
 namespace polymech::pd {
 
@@ -19,25 +19,44 @@ struct NonAffineMeasure {
   double ratio() const { return total > 0 ? std::sqrt(nonaffine / total) : 0.0; }
 };
 
+// sum_j W |Y - F_i xi|^2 and sum_j W |Y - xi|^2 over the intact bonds of i (in double).
+template <class T, int D>
+struct NonAffineRow {
+  Fields<T, D> f;
+  bool damage;
+  struct Accumulator {
+    Vec<T, D> xi0, ui;
+    Mat<T, D> Fi;
+    double nonaffine, total;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
+    return {load<D>(f.x0, i), load<D>(f.u, i), load_mat<D>(f.F, i), 0.0, 0.0};
+  }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    if (damage && !f.bond_intact(k)) return;
+    const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0, eta = load<D>(f.u, j) - acc.ui;
+    const T w = f.bond_weight(k);
+    // Y - F xi = eta - (F - I) xi
+    const Vec<T, D> z = eta - (acc.Fi * xi - xi);
+    acc.nonaffine += double(w * norm2(z));
+    acc.total += double(w * norm2(eta));
+  }
+};
+
 // Kernel "polymech::pd::nonaffine_deviation" (intact bonds; F from the last deformation pass).
 template <class T, int D>
 NonAffineMeasure nonaffine_deviation(const neighbors::BondFamily& family, const Fields<T, D>& f, Index min_bonds = 0) {
-  const bool damage = f.bond_intact.extent(0) > 0;
-  const auto s = ordered_sum<2>(
+  const NonAffineRow<T, D> row{f, f.bond_intact.extent(0) > 0};
+  const auto s = particles::ordered_sum<2>(
       "polymech::pd::nonaffine_deviation", family.num_particles, KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
-        if (family.count(static_cast<Index>(i)) < min_bonds) return;
-        const Vec<T, D> xi0 = load<D>(f.x0, i), ui = load<D>(f.u, i);
-        const Mat<T, D> Fi = load_mat<D>(f.F, i);
-        for (Offset k = family.begin(static_cast<Index>(i)); k < family.end(static_cast<Index>(i)); ++k) {
-          if (damage && !f.bond_intact(k)) continue;
-          const Index j = family.neighbor(k);
-          const Vec<T, D> xi = load<D>(f.x0, j) - xi0, eta = load<D>(f.u, j) - ui;
-          const T w = f.bond_weight(k);
-          // Y - F xi = eta - (F - I) xi
-          const Vec<T, D> z = eta - (Fi * xi - xi);
-          acc[0] += double(w * norm2(z));
-          acc[1] += double(w * norm2(eta));
-        }
+        const auto p = static_cast<Index>(i);
+        if (family.count(p) < min_bonds) return;
+        auto sums = row.start(p);
+        sums.nonaffine = acc[0];
+        sums.total = acc[1];
+        neighbors::gather_row(family, p, row, sums);
+        acc[0] = sums.nonaffine;
+        acc[1] = sums.total;
       });
   return {s[0], s[1]};
 }

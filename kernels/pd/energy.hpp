@@ -1,9 +1,9 @@
-// Energy and momentum of the particles (host values, thread-count independent sums, pd/reduce.hpp).
+// Energy and momentum of the particles (host values, thread-count independent sums,
+// particles/reductions.hpp).
 #pragma once
 
-#include "pd/constitutive.hpp"
-#include "pd/fields.hpp"
-#include "pd/reduce.hpp"
+#include "particles/reductions.hpp"
+#include "pd/stress.hpp"
 
 namespace polymech::pd {
 
@@ -16,21 +16,18 @@ struct ParticleEnergies {
   double momentum[3] = {0, 0, 0};
 };
 
-// Kernel "polymech::pd::energies". `plastic_law`: stored energy from the Cauchy stress (J2) instead of
-// the St. Venant-Kirchhoff energy of F.
-template <class T, int D>
-ParticleEnergies particle_energies(const Fields<T, D>& f, const ElasticConstants<T>& c, T density, bool plastic_law) {
+// Kernel "polymech::pd::energies": the stored energy of the law (St. Venant-Kirchhoff: W(F); J2: the
+// elastic energy of the Cauchy stress) and, for rate laws, the plastic work.
+template <class T, int D, class Law>
+ParticleEnergies particle_energies(const Fields<T, D>& f, const Law& law, T density) {
   const bool vv = f.viscous_work.extent(0) > 0, hg = f.hourglass_work.extent(0) > 0;
-  const auto s = ordered_sum<5 + D>(
+  constexpr bool plastic_law = Law::rate_form;
+  const auto s = particles::ordered_sum<5 + D>(
       "polymech::pd::energies", static_cast<std::int64_t>(f.x0.extent(0)), KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
         const T V = f.volume(i);
         const Vec<T, D> v = load<D>(f.v, i);
         acc[0] += double(T(0.5) * density * V * norm2(v));
-        if (!(f.status(i) & status_failed)) {
-          const T w = plastic_law ? elastic_energy_of_stress(load_sym(f.sigma, i), c)
-                                  : svk_energy(embed3<T, D>(load_mat<D>(f.F, i)), c);
-          acc[1] += double(V * w);
-        }
+        if (!(f.status(i) & status_failed)) acc[1] += double(V * stored_energy_density(law, f, i));
         if (plastic_law) acc[2] += double(V * f.plastic_work(i));
         if (vv) acc[3] += double(f.viscous_work(i));
         if (hg) acc[4] += double(f.hourglass_work(i));

@@ -1,10 +1,10 @@
 // Particle state of non-ordinary state-based (NOSB, "correspondence") peridynamics (seed 003 §3):
-// the Views every pd kernel reads and writes, and the small parameter structs the kernels take.
+// the shared particle set (kernels/particles: x0, u, v, a, volume, constraints) and what the pd
+// kernels add to it, and the small parameter structs the kernels take.
 //
-// State is the displacement u from the reference positions x0 (as in kernels/mps): the bond vector
-// is Y = xi + (u_j - u_i) with xi = x0_j - x0_i, so float keeps full relative precision of the
-// deformation. Per-particle matrices (F, K^-1, P K^-1, Cauchy stress) are stored row-major in Views
-// with a trailing extent D*D (or 6 for symmetric 3x3 tensors, Voigt order xx yy zz yz xz xy).
+// The bond vector is Y = xi + (u_j - u_i) with xi = x0_j - x0_i, so float keeps full relative precision
+// of the deformation. Per-particle matrices (F, K^-1, P K^-1, Cauchy stress) are stored row-major in
+// Views with a trailing extent D*D (or 6 for symmetric 3x3 tensors, Voigt order xx yy zz yz xz xy).
 //
 // Views of effects that are not enabled stay empty (extent 0): kernels test `extent(0) > 0` or a
 // flag in their parameter struct, and never touch them.
@@ -14,7 +14,8 @@
 
 #include "core/small_math.hpp"
 #include "core/types.hpp"
-#include "neighbors/neighbor_list.hpp"
+#include "neighbors/neighbor_loop.hpp"
+#include "particles/particle_set.hpp"
 
 namespace polymech::pd {
 
@@ -30,18 +31,12 @@ enum StatusBits : std::uint8_t {
   status_crushed = 4,      // F left the admissible volume range (inverted or blown up): failed for good
 };
 
-// Constraint bits (Fields::constraint): bit k set = velocity component k is prescribed.
-inline constexpr std::uint8_t constrain_all = 7;
+using particles::constrain_all;
 
+// x0, u, v, a (internal force density / rho + external force / m), volume V_i and the constraints
+// come from the particle set.
 template <class T, int D>
-struct Fields {
-  // reference configuration
-  VecView<T, D> x0;   // reference positions
-  View1<T> volume;    // V_i
-  // motion
-  VecView<T, D> u;    // displacement
-  VecView<T, D> v;    // velocity
-  VecView<T, D> a;    // acceleration (internal force density / rho + external force / m)
+struct Fields : particles::ParticleSet<T, D> {
   // per particle, from the deformation-gradient pass
   MatView<T, D> kinv;  // K_i^-1, inverse shape tensor (eq. (1), right factor)
   MatView<T, D> F;     // deformation gradient F_i (eq. (1))
@@ -66,9 +61,6 @@ struct Fields {
   // hourglass effect; empty otherwise
   View1<T> hourglass_work;       // work done on particle i by the stabilisation forces [J]
   VecView<T, D> hg_force;        // the hourglass force density of the last evaluation
-  // boundary conditions (empty when nothing is constrained)
-  Kokkos::View<std::uint8_t*, MemSpace> constraint;  // bits: prescribed velocity components
-  VecView<T, D> prescribed_v;                         // prescribed velocity where constrained
 };
 
 // Bond weights of eq. (1): V_ij (plain: the neighbour's volume V_j) or, with the weighted_function
@@ -90,17 +82,28 @@ struct BondWeight {
 // Kernel "polymech::pd::bond_weights": W_ij of every bond of the family, once (they depend on the
 // reference configuration only; stored, the bond passes stream them instead of recomputing them).
 template <class T, int D>
+struct BondWeights {
+  VecView<T, D> x0;
+  View1<T> volume;
+  BondWeight<T> weight;
+  View1<T> out;
+  struct Accumulator {
+    Vec<T, D> xi0;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(x0, i)}; }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    T xi2 = T(0);
+    for (int d = 0; d < D; ++d) xi2 += (x0(j, d) - acc.xi0[d]) * (x0(j, d) - acc.xi0[d]);
+    out(k) = weight(volume(j), xi2);
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator&, const Accumulator&) {}
+};
+
+template <class T, int D>
 void bond_weights(const neighbors::BondFamily& family, const VecView<T, D>& x0, const View1<T>& volume,
                   const BondWeight<T>& weight, const View1<T>& out) {
-  Kokkos::parallel_for(
-      "polymech::pd::bond_weights", range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          const Index j = family.neighbor(k);
-          T xi2 = T(0);
-          for (int d = 0; d < D; ++d) xi2 += (x0(j, d) - x0(i, d)) * (x0(j, d) - x0(i, d));
-          out(k) = weight(volume(j), xi2);
-        }
-      });
+  neighbors::for_each_row("polymech::pd::bond_weights", family, BondWeights<T, D>{x0, volume, weight, out});
 }
 
 // Matrices in row-major Views with trailing extent D*D.

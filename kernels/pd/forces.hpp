@@ -47,69 +47,87 @@ constexpr const char* bond_forces_label() {
 
 // Writes a_i = L_i / rho (external forces are added afterwards).
 template <class T, int D, bool Hourglass, bool Viscosity>
-void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, const ForceParams<T>& p) {
-  const bool damage = p.damage;
-  const T inv_rho = T(1) / p.density, hg_c = p.hourglass_c, work_dt = p.work_dt;
-  Kokkos::parallel_for(
-      detail::bond_forces_label<Hourglass, Viscosity>(), range(family.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const Vec<T, D> xi0 = load<D>(f.x0, i);
-        const Mat<T, D> Ai = load_mat<D>(f.A, i);
-        auto wxi = Vec<T, D>::zero();   // sum W xi
-        auto fj = Vec<T, D>::zero();    // sum W A_j xi
-        // hourglass sums
-        Vec<T, D> ui = Vec<T, D>::zero();
-        auto hg_y = Vec<T, D>::zero();   // sum W Y / |xi|
-        auto hg_xi = Vec<T, D>::zero();  // sum W xi / |xi|
-        auto hg_fj = Vec<T, D>::zero();  // sum W F_j xi / |xi|
-        // viscosity sums
-        T wsum = T(0);
-        auto tj = Vec<T, D>::zero();  // sum W t_j
-        if (Hourglass) ui = load<D>(f.u, i);
-        for (Offset k = family.begin(i); k < family.end(i); ++k) {
-          if (damage && !f.bond_intact(k)) continue;
-          const Index j = family.neighbor(k);
-          const Vec<T, D> xi = load<D>(f.x0, j) - xi0;
-          const T w = f.bond_weight(k);
-          wxi += w * xi;
-          fj += w * (load_mat<D>(f.A, j) * xi);
-          if (Hourglass) {
-            const T wl = w / kx::sqrt(norm2(xi));
-            hg_y += wl * (xi + (load<D>(f.u, j) - ui));
-            hg_xi += wl * xi;
-            hg_fj += wl * (load_mat<D>(f.F, j) * xi);
-          }
-          if (Viscosity) {
-            wsum += w;
-            tj += w * load<D>(f.vv_state, j);
-          }
-        }
-        Vec<T, D> force = Ai * wxi + fj;
-        if (Hourglass) {
-          const Vec<T, D> fs = hg_c * (T(2) * hg_y - load_mat<D>(f.F, i) * hg_xi - hg_fj);
-          force += fs;
-          if (work_dt > T(0))
-            f.hourglass_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fs + load<D>(f.hg_force, i), load<D>(f.v, i));
-          store<D>(f.hg_force, i, fs);
-        }
-        if (Viscosity) {
-          const Vec<T, D> fv = wsum * load<D>(f.vv_state, i) - tj;
-          force += fv;
-          if (work_dt > T(0))
-            f.viscous_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fv + load<D>(f.vv_force, i), load<D>(f.v, i));
-          store<D>(f.vv_force, i, fv);
-        }
-        store<D>(f.a, i, inv_rho * force);
-      });
+struct BondForces {
+  Fields<T, D> f;
+  bool damage;
+  T inv_rho, hg_c, work_dt;
+  struct Accumulator {
+    Vec<T, D> xi0, ui;
+    Vec<T, D> wxi;    // sum W xi
+    Vec<T, D> fj;     // sum W A_j xi
+    Vec<T, D> hg_y;   // sum W Y / |xi|
+    Vec<T, D> hg_xi;  // sum W xi / |xi|
+    Vec<T, D> hg_fj;  // sum W F_j xi / |xi|
+    T wsum;
+    Vec<T, D> tj;     // sum W t_j
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
+    const auto z = Vec<T, D>::zero();
+    Accumulator acc{load<D>(f.x0, i), z, z, z, z, z, z, T(0), z};
+    if (Hourglass) acc.ui = load<D>(f.u, i);
+    return acc;
+  }
+  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+    if (damage && !f.bond_intact(k)) return;
+    const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0;
+    const T w = f.bond_weight(k);
+    acc.wxi += w * xi;
+    acc.fj += w * (load_mat<D>(f.A, j) * xi);
+    if (Hourglass) {
+      const T wl = w / kx::sqrt(norm2(xi));
+      acc.hg_y += wl * (xi + (load<D>(f.u, j) - acc.ui));
+      acc.hg_xi += wl * xi;
+      acc.hg_fj += wl * (load_mat<D>(f.F, j) * xi);
+    }
+    if (Viscosity) {
+      acc.wsum += w;
+      acc.tj += w * load<D>(f.vv_state, j);
+    }
+  }
+  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+    Vec<T, D> force = load_mat<D>(f.A, i) * acc.wxi + acc.fj;
+    if (Hourglass) {
+      const Vec<T, D> fs = hg_c * (T(2) * acc.hg_y - load_mat<D>(f.F, i) * acc.hg_xi - acc.hg_fj);
+      force += fs;
+      if (work_dt > T(0))
+        f.hourglass_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fs + load<D>(f.hg_force, i), load<D>(f.v, i));
+      store<D>(f.hg_force, i, fs);
+    }
+    if (Viscosity) {
+      const Vec<T, D> fv = acc.wsum * load<D>(f.vv_state, i) - acc.tj;
+      force += fv;
+      if (work_dt > T(0))
+        f.viscous_work(i) += T(0.5) * work_dt * f.volume(i) * dot(fv + load<D>(f.vv_force, i), load<D>(f.v, i));
+      store<D>(f.vv_force, i, fv);
+    }
+    store<D>(f.a, i, inv_rho * force);
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) {
+    into.wxi += from.wxi;
+    into.fj += from.fj;
+    into.hg_y += from.hg_y;
+    into.hg_xi += from.hg_xi;
+    into.hg_fj += from.hg_fj;
+    into.wsum += from.wsum;
+    into.tj += from.tj;
+  }
+};
+
+template <class T, int D, bool Hourglass, bool Viscosity, class Strategy = neighbors::SerialNeighbors>
+void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, const ForceParams<T>& p, Strategy strategy = {}) {
+  neighbors::for_each_row(detail::bond_forces_label<Hourglass, Viscosity>(), family,
+                          BondForces<T, D, Hourglass, Viscosity>{f, p.damage, T(1) / p.density, p.hourglass_c, p.work_dt},
+                          strategy);
 }
 
 // Runtime dispatch on the enabled controls.
-template <class T, int D>
+template <class T, int D, class Strategy = neighbors::SerialNeighbors>
 void bond_forces(const neighbors::BondFamily& family, const Fields<T, D>& f, const ForceParams<T>& p, bool hourglass,
-                 bool viscosity) {
-  if (hourglass && viscosity) bond_forces<T, D, true, true>(family, f, p);
-  else if (hourglass) bond_forces<T, D, true, false>(family, f, p);
-  else if (viscosity) bond_forces<T, D, false, true>(family, f, p);
-  else bond_forces<T, D, false, false>(family, f, p);
+                 bool viscosity, Strategy strategy = {}) {
+  if (hourglass && viscosity) bond_forces<T, D, true, true>(family, f, p, strategy);
+  else if (hourglass) bond_forces<T, D, true, false>(family, f, p, strategy);
+  else if (viscosity) bond_forces<T, D, false, true>(family, f, p, strategy);
+  else bond_forces<T, D, false, false>(family, f, p, strategy);
 }
 
 }  // namespace polymech::pd

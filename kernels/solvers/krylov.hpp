@@ -20,6 +20,8 @@
 // A failed solve says why in SolveResult::reason.
 #pragma once
 
+#include "solvers/options.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -54,15 +56,6 @@ inline const char* to_string(SolveStatus s) {
   }
   return "unknown";
 }
-
-struct SolverOptions {
-  double tolerance = 1e-10;      // on |r| / |b| (seed 002 paper 3 Table 1)
-  int max_iterations = 10000;    // Table 1
-  double breakdown_tolerance = -1.0;  // relative; < 0: 64 x the machine epsilon of the precision
-  int stagnation_window = 1000;  // iterations without a 10 % reduction of the best residual
-  int max_restarts = 3;          // restarts from the true residual
-  std::function<void(int iteration, double relative_residual)> monitor;  // called every iteration
-};
 
 struct SolveResult {
   SolveStatus status = SolveStatus::max_iterations;

@@ -9,7 +9,7 @@
 
 #include "effects.hpp"
 #include "helmholtz/mesh.hpp"
-#include "solvers/krylov.hpp"
+#include "solvers/options.hpp"
 
 namespace polymech::helmholtz {
 

@@ -24,6 +24,7 @@
 #include "fem/l2_error.hpp"
 #include "helmholtz/analytic.hpp"
 #include "helmholtz/config.hpp"
+#include "helmholtz/effect_table.hpp"
 #include "helmholtz/dofs.hpp"
 #include "helmholtz/operator.hpp"
 #include "solvers/krylov.hpp"
@@ -96,27 +97,7 @@ class Helmholtz {
  public:
   using C = Kokkos::complex<T>;
 
-  static const std::vector<EffectSpec>& effects() {
-    static const std::vector<EffectSpec> specs = {
-        {"dirichlet",
-         "strong Dirichlet values on boundaries of kind dirichlet (the analytic field, eq. (27), or a constant)",
-         {},
-         {"polymech::fem::dirichlet_values", "polymech::fem::dirichlet_rows", "polymech::fem::dirichlet_lift",
-          "polymech::fem::dirichlet_fill"},
-         "1 index + 1 complex per constrained DoF"},
-        {"impedance",
-         "impedance boundaries dPhi/dn = -j omega rho Phi / Zn (eqs. (7), (19)): the C term of eq. (16)",
-         {},
-         {"polymech::fem::face_geometry", "polymech::fem::impedance_apply", "polymech::fem::impedance_diagonal"},
-         "(p+1)^2 indices + (p+1)^2 reals + 1 complex per impedance face"},
-        {"vibrating",
-         "vibrating boundaries with normal velocity v (eqs. (8), (20)): the source q of eq. (16)",
-         {},
-         {"polymech::fem::face_geometry", "polymech::fem::boundary_load"},
-         "(p+1)^2 indices + (p+1)^2 reals + 1 complex per vibrating face"},
-    };
-    return specs;
-  }
+  static const std::vector<EffectSpec>& effects() { return effect_table(); }
 
   explicit Helmholtz(const Config& c);
 

@@ -2,7 +2,7 @@
 // its step from the enabled effects and exposes diagnostics (energy, probes, fields).
 //
 //   polymech::mps_elastic::Config cfg;            // or io::load_mps_elastic_scene(...)
-//   cfg.effects = EffectSet::resolve({"rotation"}, MpsElastic<double>::effects());
+//   cfg.effects = EffectSet::resolve({"rotation"}, mps_elastic::effect_table());
 //   MpsElastic<double> model(cfg);
 //   while (model.step_index() < cfg.steps) model.step();
 //
@@ -11,30 +11,34 @@
 // with no rotation correction: S waves then travel at sqrt(2) cs (tests/mps/test_mps_wave_speeds.cpp).
 // `crack_contact.open_close` and `crack_contact.slip`: contact between the faces of Config::crack
 // (seed 000 §4, models/mps_elastic/crack.hpp).
+//
+// A step (models/common/explicit_model.hpp; symplectic Euler, eqs. (13)-(16)): compute_forces (volumetric
+// strain eq. (4), accelerations eqs. (11)-(12), the crack-line monitor), observe (probes), add_contact_forces
+// (crack faces, eqs. (17)-(21)), advance_second_half (integration, then the prescribed excitation).
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/explicit_model.hpp"
+#include "common/host_copy.hpp"
+#include "common/particle_health.hpp"
+#include "common/run.hpp"
+#include "common/stability.hpp"
 #include "mps/elastic.hpp"
 #include "mps/excitation.hpp"
 #include "mps_elastic/config.hpp"
 #include "mps_elastic/crack.hpp"
+#include "mps_elastic/effect_table.hpp"
 #include "mps_elastic/lattice.hpp"
-#include "mps_elastic/power_iteration.hpp"
 #include "mps_elastic/probe_recorder.hpp"
 #include "neighbors/neighbor_search.hpp"
+#include "particles/integrators.hpp"
+#include "particles/reductions.hpp"
 
 namespace polymech::mps_elastic {
-
-inline std::string format_g(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 // Fractions of the crack's contact pairs in each state over time (seed 000 §4).
 struct ContactHistory {
@@ -46,31 +50,25 @@ struct HostFields {
   std::vector<double> x0, u, v, e, theta;
 };
 
+// The degrees of freedom of the power iteration (models/common/stability.hpp): u1, u3 with the
+// particle mass and, with rotation, theta with the moment of inertia.
+template <class T, bool Rotation>
+struct ElasticDofs {
+  static constexpr int slots = Rotation ? 3 : 2;
+  mps::ElasticFields<T> f;
+  T mass, inertia, l0;
+  KOKKOS_INLINE_FUNCTION T& state(Index i, int s) const { return s < 2 ? f.u(i, s) : f.theta(i); }
+  KOKKOS_INLINE_FUNCTION T response(Index i, int s) const { return s < 2 ? f.a(i, s) : f.alpha(i); }
+  KOKKOS_INLINE_FUNCTION double weight(Index, int s) const { return double(s < 2 ? mass : inertia); }
+  KOKKOS_INLINE_FUNCTION T start_divisor(int s) const { return s < 2 ? T(1) : l0; }  // theta ~ u / l0
+};
 
 template <class T>
 class MpsElastic {
  public:
-  static const std::vector<EffectSpec>& effects() {
-    static const std::vector<EffectSpec> specs = {
-        {"rotation",
-         "relative displacement with particle rotation (seed 000 eqs. (6)-(7)) and the rotation equation (12)",
-         {},
-         {"polymech::mps::volumetric_strain_with_rotation", "polymech::mps::elastic_acceleration_with_rotation",
-          "polymech::mps::rotation_update"},
-         "5 reals per particle (theta, omega, alpha, sin theta, (1 - cos theta)/2)"},
-        {"crack_contact.open_close",
-         "crack faces open and close: penalty repulsion between S+ and S- pairs (seed 000 eqs. (17)-(19))",
-         {},
-         {"polymech::contact::crack_open_close", "polymech::contact::crack_apply_forces"},
-         "per crack pair: state (1 int) and force (2 reals)"},
-        {"crack_contact.slip",
-         "crack faces stick and slip: Coulomb friction with a fixed or contact normal force (seed 000 eqs. (20)-(21))",
-         {},
-         {"polymech::contact::crack_slip", "polymech::contact::crack_apply_forces"},
-         "per crack pair: state, force, anchor (2 reals), preload, slip sign; + normal force with open_close"},
-    };
-    return specs;
-  }
+  static constexpr int dimension = 2;
+
+  static const std::vector<EffectSpec>& effects() { return effect_table(); }
 
   explicit MpsElastic(const Config& c) : cfg_(c), rotation_(c.effects.has("rotation")) {
     validate(c);
@@ -83,26 +81,17 @@ class MpsElastic {
     params_.mass = static_cast<T>(c.density * c.spacing * c.spacing);
     params_.inertia = static_cast<T>(c.inertia_factor * c.density * c.spacing * c.spacing * c.spacing * c.spacing);
 
-    f_.x0 = VecView<T, 2>("polymech::mps_elastic::x0", n_);
-    f_.u = VecView<T, 2>("polymech::mps_elastic::u", n_);
-    f_.v = VecView<T, 2>("polymech::mps_elastic::v", n_);
-    f_.a = VecView<T, 2>("polymech::mps_elastic::a", n_);
-    f_.e = View1<T>("polymech::mps_elastic::e", n_);
+    const std::string pre = "polymech::mps_elastic::";
+    particles::allocate(f_, n_, pre);
+    f_.e = View1<T>(pre + "e", n_);
     if (rotation_) {
-      f_.theta = View1<T>("polymech::mps_elastic::rotation_theta", n_);
-      f_.omega = View1<T>("polymech::mps_elastic::rotation_omega", n_);
-      f_.alpha = View1<T>("polymech::mps_elastic::rotation_alpha", n_);
-      f_.sin_theta = View1<T>("polymech::mps_elastic::rotation_sin_theta", n_);
-      f_.half_omc = View1<T>("polymech::mps_elastic::rotation_half_omc", n_);
+      f_.theta = View1<T>(pre + "rotation_theta", n_);
+      f_.omega = View1<T>(pre + "rotation_omega", n_);
+      f_.alpha = View1<T>(pre + "rotation_alpha", n_);
+      f_.sin_theta = View1<T>(pre + "rotation_sin_theta", n_);
+      f_.half_omc = View1<T>(pre + "rotation_half_omc", n_);
     }
-    {
-      auto h = Kokkos::create_mirror_view(f_.x0);
-      for (Index i = 0; i < n_; ++i) {
-        h(i, 0) = static_cast<T>(lat.x1(i));
-        h(i, 1) = static_cast<T>(lat.x3(i));
-      }
-      Kokkos::deep_copy(f_.x0, h);
-    }
+    particles::set_reference_positions(f_, [&](Index i, int k) { return k == 0 ? lat.x1(i) : lat.x3(i); });
     // Reference-configuration family; r_e slightly enlarged so round-off never drops a pair whose
     // weight would be (nearly) zero anyway.
     family_ = neighbors::build_bond_family<T, 2>(f_.x0, params_.re * T(1 + 1e-6));
@@ -116,36 +105,47 @@ class MpsElastic {
       if (c.n0_override > 0.0) n0_ = c.n0_override;
       params_.n0 = static_cast<T>(n0_);
     }
-    crack_ = CrackFaces<T>(c.crack, c.effects, f_.x0, family_, c.spacing, c.density * c.spacing * c.spacing, c.dt);
-    if (c.crack.mode == CrackMode::cut) family_ = crack_.cut(family_, f_.x0);  // seed 000 §4: no operator across
-    f_.inv_r0 = View1<T>("polymech::mps_elastic::inv_r0", family_.num_pairs);
+    crack_ = CrackFaces<T>(c, family_, c.density * c.spacing * c.spacing, c.dt);
+    if (c.crack.mode == CrackMode::cut) family_ = crack_.cut(family_);  // seed 000 §4: no operator across
+    f_.inv_r0 = View1<T>(pre + "inv_r0", family_.num_pairs);
     mps::reference_bond_lengths(family_, f_);
 
     setup_excitation(lat);
     probes_ = ProbeRecorder<T>(cfg_, lat);
+    register_state();
     if (!c.allow_unstable_dt && c.dt > stable_dt())
-      throw std::invalid_argument("mps_elastic: dt = " + format_g(c.dt) + " s is above the stability limit " +
-                                  format_g(stable_dt_) + " s of this resolution (spacing " + format_g(c.spacing) +
-                                  " m)");
+      throw std::invalid_argument("mps_elastic: dt = " + models::format_g(c.dt) + " s is above the stability limit " +
+                                  models::format_g(stable_dt_) + " s of this resolution (spacing " +
+                                  models::format_g(c.spacing) + " m)");
   }
 
-  // Advance one time step (seed 000 eqs. (11)-(16)).
-  void step() {
+  // One time step (seed 000 eqs. (11)-(16)), in the phases of models/common/explicit_model.hpp.
+  void step() { models::explicit_step(*this); }
+
+  // Symplectic Euler needs no forces of the initial state.
+  void prepare() {}
+  void mark_prepared() {}
+  void advance_first_half() {}
+  void compute_forces() {
     if (rotation_) {
       mps::volumetric_strain<T, true>(family_, f_, params_);
-      if (sample_due()) sample();
       mps::elastic_acceleration<T, true>(family_, f_, params_);
       crack_.template monitor<true>(f_, params_);
     } else {
       mps::volumetric_strain<T, false>(family_, f_, params_);
-      if (sample_due()) sample();
       mps::elastic_acceleration<T, false>(family_, f_, params_);
       crack_.template monitor<false>(f_, params_);
     }
-    crack_.add_contact_forces(f_);
+  }
+  // Probes and crack-state fractions at this step's state (u and e of step k, time t_k).
+  void observe() {
+    if (probes_.count() > 0 && step_ % cfg_.probe_every == 0) sample();
+  }
+  void add_contact_forces() { crack_.add_contact_forces(f_); }
+  void advance_second_half() {
     const T dt = static_cast<T>(cfg_.dt);
-    mps::symplectic_euler(f_, dt);
-    if (rotation_) mps::rotation_update(f_, dt);
+    particles::symplectic_euler(f_, dt);  // eqs. (13)-(14)
+    if (rotation_) mps::rotation_update(f_, dt);  // eqs. (15)-(16)
     ++step_;
     const double t = time();
     if (excitation_on_ && pulse_.active(t)) {
@@ -154,10 +154,12 @@ class MpsElastic {
     }
   }
 
+  double dt() const { return cfg_.dt; }
   double time() const { return static_cast<double>(step_) * cfg_.dt; }
   // Time at which the prescribed excitation ends (0 without one); afterwards the system is free.
   double excitation_end_time() const { return excitation_on_ ? pulse_.duration() : 0.0; }
   std::int64_t step_index() const { return step_; }
+  void set_step_index(std::int64_t k) { step_ = k; }
   Index particles() const { return n_; }
   Offset bonds() const { return family_.num_pairs; }
   double n0() const { return n0_; }
@@ -172,6 +174,7 @@ class MpsElastic {
   const CrackFaces<T>& crack() const { return crack_; }
   // Fractions of crack pairs in separation / stick / slip at the probe samples (contact effects only).
   const ContactHistory& contact_history() const { return contact_history_; }
+  const models::StateRegistry& state() const { return state_; }
 
   // Kinetic and strain energy now. The strain term uses e from the start of the last step.
   mps::ElasticEnergy energy() const {
@@ -179,40 +182,24 @@ class MpsElastic {
                      : mps::elastic_energy<T, false>(family_, f_, params_);
   }
 
-  // False once any displacement or velocity is NaN or infinite.
-  bool finite() const {
-    int bad = 0;
-    const auto u = f_.u, v = f_.v;
-    Kokkos::parallel_reduce(
-        "polymech::mps_elastic::finite_check", range(n_),
-        KOKKOS_LAMBDA(const Index i, int& b) {
-          for (int k = 0; k < 2; ++k)
-            if (!kx::isfinite(u(i, k)) || !kx::isfinite(v(i, k))) ++b;
-        },
-        bad);
-    return bad == 0;
+  // The watchdog's check: the first particle whose displacement or velocity is NaN or infinite, or
+  // whose displacement is more than half a spacing (elastic waves are small-displacement motion: an
+  // unstable lattice flies apart, its interactions vanish and its energy stays finite).
+  models::Health health() const {
+    return models::particle_health(f_, static_cast<T>(0.5 * cfg_.spacing), "half a spacing: the lattice is torn apart");
   }
+  bool finite() const { return health().finite; }
 
   // Probe time series so far (copies pending samples from the device).
   const ProbeHistory& probes() { return probes_.history(); }
 
   HostFields host_fields() const {
     HostFields h;
-    auto copy_vec = [&](const VecView<T, 2>& v, std::vector<double>& out) {
-      auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
-      out.resize(2 * static_cast<std::size_t>(n_));
-      for (Index i = 0; i < n_; ++i)
-        for (int k = 0; k < 2; ++k) out[2 * static_cast<std::size_t>(i) + k] = static_cast<double>(m(i, k));
-    };
-    auto copy_scalar = [&](const View1<T>& v, std::vector<double>& out) {
-      auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
-      out.assign(m.data(), m.data() + n_);
-    };
-    copy_vec(f_.x0, h.x0);
-    copy_vec(f_.u, h.u);
-    copy_vec(f_.v, h.v);
-    copy_scalar(f_.e, h.e);
-    if (rotation_) copy_scalar(f_.theta, h.theta);
+    h.x0 = models::to_host(f_.x0);
+    h.u = models::to_host(f_.u);
+    h.v = models::to_host(f_.v);
+    h.e = models::to_host(f_.e);
+    h.theta = models::to_host(f_.theta);
     return h;
   }
 
@@ -232,8 +219,7 @@ class MpsElastic {
     patch.allow_unstable_dt = true;
     patch.n0_override = c.n0_override > 0.0 ? c.n0_override : reference_number_density(c);
     MpsElastic<double> m(patch);
-    const double lambda = m.max_eigenvalue(iterations);
-    return 2.0 / std::sqrt(lambda);
+    return models::leapfrog_stable_step(m.max_eigenvalue(iterations));
   }
 
   // n0 the full model uses, computed from the lattice alone (no particles allocated).
@@ -244,15 +230,9 @@ class MpsElastic {
   }
 
   // Power iteration for the largest eigenvalue of M^-1 K, the linearised operator of this model.
+  // Leaves the state at rest.
   double max_eigenvalue(int iterations) {
-    const T eps = static_cast<T>(1e-9 * cfg_.spacing);  // small enough that the operator is linear
-    randomize_state(eps);
-    double lambda = 0.0;
-    for (int it = 0; it < iterations; ++it) {
-      compute_acceleration();
-      lambda = rayleigh_quotient();
-      load_acceleration_as_state(eps);
-    }
+    const double lambda = rotation_ ? max_eigenvalue_of<true>(iterations) : max_eigenvalue_of<false>(iterations);
     reset_state();
     return lambda;
   }
@@ -276,6 +256,30 @@ class MpsElastic {
     if (!(c.n0_override >= 0.0)) fail("n0 override must be >= 0");
   }
 
+  // What a step reads that it did not compute: u, v (and theta, omega with rotation; sin theta and
+  // (1 - cos theta)/2 follow theta), the crack's contact state and the crack-line monitor.
+  void register_state() {
+    state_.add("u", f_.u);
+    state_.add("v", f_.v);
+    state_.add("rotation_theta", f_.theta);
+    state_.add("rotation_omega", f_.omega);
+    state_.add("rotation_sin_theta", f_.sin_theta);
+    state_.add("rotation_half_omc", f_.half_omc);
+    crack_.register_state(state_);
+  }
+
+  template <bool Rotation>
+  double max_eigenvalue_of(int iterations) {
+    const T eps = static_cast<T>(1e-9 * cfg_.spacing);  // small enough that the operator is linear
+    const ElasticDofs<T, Rotation> dofs{f_, params_.mass, params_.inertia, static_cast<T>(cfg_.spacing)};
+    auto apply = [&] {
+      if (Rotation) mps::rotation_trigonometry(f_);
+      mps::volumetric_strain<T, Rotation>(family_, f_, params_);
+      mps::elastic_acceleration<T, Rotation>(family_, f_, params_);
+    };
+    return models::largest_eigenvalue(dofs, n_, apply, eps, iterations, particles::StartVector{3, 1u, 1u});
+  }
+
   void setup_excitation(const Lattice& lat) {
     const auto& ex = cfg_.excitation;
     excitation_on_ = ex.kind != ExcitationKind::none;
@@ -285,33 +289,12 @@ class MpsElastic {
     pulse_.cycles = ex.cycles;
     pulse_.shape = ex.kind == ExcitationKind::point ? mps::PulseShape::hann : mps::PulseShape::sine;
     pulse_.component = ex.kind == ExcitationKind::plane_s ? 0 : 1;
-    std::vector<Index> src;
-    const std::int64_t top = lat.ny - 1;
-    const double xs = ex.position < 0 ? 0.5 * cfg_.width : ex.position;
-    if (ex.kind != ExcitationKind::point) {
-      for (std::int64_t i = 0; i < lat.nx; ++i) src.push_back(lat.index(i, top));
-    } else {
-      // The point source drives the top-row particles whose cells lie inside [xs - w/2, xs + w/2], so
-      // the driven width is the same physical width at every resolution (w a multiple of l0). When no
-      // cell fits (w = 0 or w < l0), the particle(s) nearest to xs (both, when xs is between two).
-      const double half = 0.5 * ex.width * (1.0 + 1e-9), l0 = cfg_.spacing;
-      double nearest = 1e300;
-      for (std::int64_t i = 0; i < lat.nx; ++i) {
-        const double d = std::abs(lat.x1(lat.index(i, top)) - xs);
-        if (d + 0.5 * l0 <= half) src.push_back(lat.index(i, top));
-        nearest = std::min(nearest, d);
-      }
-      if (src.empty())
-        for (std::int64_t i = 0; i < lat.nx; ++i)
-          if (std::abs(lat.x1(lat.index(i, top)) - xs) <= nearest + 1e-9 * l0) src.push_back(lat.index(i, top));
-    }
+    const std::vector<Index> src = source_particles(cfg_, lat);
     sources_ = View1<Index>("polymech::mps_elastic::sources", src.size());
     auto h = Kokkos::create_mirror_view(sources_);
     for (std::size_t k = 0; k < src.size(); ++k) h(k) = src[k];
     Kokkos::deep_copy(sources_, h);
   }
-
-  bool sample_due() const { return probes_.count() > 0 && step_ % cfg_.probe_every == 0; }
 
   void sample() {
     if (rotation_)
@@ -326,33 +309,6 @@ class MpsElastic {
       contact_history_.stick.push_back(static_cast<double>(n.stick) / total);
       contact_history_.slip.push_back(static_cast<double>(n.slip) / total);
     }
-  }
-
-  void compute_acceleration() {
-    if (rotation_) {
-      mps::volumetric_strain<T, true>(family_, f_, params_);
-      mps::elastic_acceleration<T, true>(family_, f_, params_);
-    } else {
-      mps::volumetric_strain<T, false>(family_, f_, params_);
-      mps::elastic_acceleration<T, false>(family_, f_, params_);
-    }
-  }
-
-  // Deterministic pseudo-random start vector of amplitude eps.
-  void randomize_state(T eps) {
-    detail::power_iteration_start(f_, n_, rotation_, eps, static_cast<T>(cfg_.spacing));
-    if (rotation_) mps::rotation_trigonometry(f_);
-  }
-
-  // <q, A q>_M / <q, q>_M with A q = -(a, alpha): the Rayleigh quotient of M^-1 K.
-  double rayleigh_quotient() {
-    return detail::power_iteration_rayleigh_quotient(f_, n_, rotation_, params_.mass, params_.inertia);
-  }
-
-  // q <- A q, renormalised to M-norm amplitude eps per particle.
-  void load_acceleration_as_state(T eps) {
-    detail::power_iteration_step(f_, n_, rotation_, params_.mass, params_.inertia, eps);
-    if (rotation_) mps::rotation_trigonometry(f_);
   }
 
   void reset_state() {
@@ -386,6 +342,7 @@ class MpsElastic {
   // crack
   CrackFaces<T> crack_;
   ContactHistory contact_history_;
+  models::StateRegistry state_;
 };
 
 }  // namespace polymech::mps_elastic

@@ -1,6 +1,6 @@
 // Probes of the 2D MPS models: each probe is a small weighted set of particles (Shepard interpolation
 // with the MPS weight, eq. (1), over the particles within r_e of the probe point), sampled by a kernel
-// into a device buffer that is copied to the host in chunks, not every step.
+// into the shared probe buffer (models/common/probes.hpp).
 #pragma once
 
 #include <algorithm>
@@ -9,18 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "common/probes.hpp"
 #include "mps/probes.hpp"
 #include "mps_elastic/config.hpp"
 #include "mps_elastic/lattice.hpp"
 
 namespace polymech::mps_elastic {
 
-// Probe time series on the host: values[p][f][s] for probe p, field f (mps::ProbeField), sample s.
-struct ProbeHistory {
-  std::vector<std::string> names;
-  std::vector<double> times;
-  std::vector<std::vector<std::vector<double>>> values;
-};
+// values[p][f][s] for probe p, field f (mps::ProbeField), sample s.
+using models::ProbeHistory;
 
 template <class T>
 class ProbeRecorder {
@@ -29,11 +26,11 @@ class ProbeRecorder {
 
   // Throws std::invalid_argument for a probe with no particle within r_e.
   ProbeRecorder(const Config& c, const Lattice& lat) {
-    const int np = static_cast<int>(c.probes.size());
-    if (np == 0) return;
+    if (c.probes.empty()) return;
     std::vector<Offset> off(1, 0);
     std::vector<Index> ids;
     std::vector<double> wts;
+    std::vector<std::string> names;
     const double re = c.re();
     for (const auto& p : c.probes) {
       std::vector<std::pair<Index, double>> near;  // particle, weight
@@ -59,7 +56,7 @@ class ProbeRecorder {
         wts.push_back(q.second / sum);
       }
       off.push_back(static_cast<Offset>(ids.size()));
-      history_.names.push_back(p.name);
+      names.push_back(p.name);
     }
     stencil_.offsets = Kokkos::View<Offset*, MemSpace>("polymech::mps_elastic::probe_offsets", off.size());
     stencil_.particles = Kokkos::View<Index*, MemSpace>("polymech::mps_elastic::probe_particles", ids.size());
@@ -75,8 +72,9 @@ class ProbeRecorder {
     Kokkos::deep_copy(stencil_.offsets, ho);
     Kokkos::deep_copy(stencil_.particles, hi);
     Kokkos::deep_copy(stencil_.weights, hw);
-    history_.values.assign(np, std::vector<std::vector<double>>(mps::probe_field_count));
-    record_ = View2<T>("polymech::mps_elastic::probe_record", capacity_, np * mps::probe_field_count);
+    std::vector<std::string> fields;
+    for (int f = 0; f < mps::probe_field_count; ++f) fields.push_back(mps::probe_field_name(f));
+    buffer_ = models::ProbeBuffer<T>("polymech::mps_elastic::probe_record", names, fields);
   }
 
   int count() const { return stencil_.count(); }
@@ -85,39 +83,17 @@ class ProbeRecorder {
   template <bool Rotation>
   void sample(const neighbors::BondFamily& family, const mps::ElasticFields<T>& f, const mps::ElasticParams<T>& p,
               double t) {
-    if (pending_ == capacity_) flush();
-    mps::sample_probes<T, Rotation>(stencil_, family, f, p, record_, pending_);
-    pending_times_.push_back(t);
-    ++pending_;
+    const std::int64_t slot = buffer_.next_slot();
+    mps::sample_probes<T, Rotation>(stencil_, family, f, p, buffer_.record(), slot);
+    buffer_.commit(t);
   }
 
   // Everything recorded so far (copies pending samples from the device first).
-  const ProbeHistory& history() {
-    flush();
-    return history_;
-  }
+  const ProbeHistory& history() { return buffer_.history(); }
 
  private:
-  void flush() {
-    if (pending_ == 0) return;
-    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), record_);
-    const int np = stencil_.count();
-    for (std::int64_t s = 0; s < pending_; ++s) {
-      history_.times.push_back(pending_times_[s]);
-      for (int p = 0; p < np; ++p)
-        for (int f = 0; f < mps::probe_field_count; ++f)
-          history_.values[p][f].push_back(static_cast<double>(h(s, p * mps::probe_field_count + f)));
-    }
-    pending_ = 0;
-    pending_times_.clear();
-  }
-
   mps::ProbeStencil<T> stencil_;
-  View2<T> record_;
-  static constexpr std::int64_t capacity_ = 2048;
-  std::int64_t pending_ = 0;
-  std::vector<double> pending_times_;
-  ProbeHistory history_;
+  models::ProbeBuffer<T> buffer_;
 };
 
 }  // namespace polymech::mps_elastic

@@ -1,83 +1,49 @@
-// Driving an MpsElastic model through a run: steps, energy bookkeeping, and hooks for progress and
-// snapshots (the app decides what they print or write; models do no I/O). Also the wave-speed
-// measurement of seed 000 §5.1 from the probe histories.
+// Driving an MpsElastic model through a run (the shared driver of models/common/run.hpp with the
+// model's energy bookkeeping), and the wave-speed measurement of seed 000 §5.1 from the probe
+// histories.
 #pragma once
 
-#include <chrono>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "analysis/signals.hpp"
+#include "common/run.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 
 namespace polymech::mps_elastic {
 
-struct RunHooks {
-  std::function<void(std::int64_t step)> after_step;  // progress
-  std::int64_t snapshot_every = 0;                    // 0: never
-  std::function<void(std::int64_t step)> snapshot;    // called at step 0 and every snapshot_every steps
-  std::int64_t energy_every = 100;                    // energy sampling interval (steps)
+using models::RunHooks;
+
+// The shared driver's statistics and the energy record: samples of the total energy, its drift and
+// spread over the samples after the excitation has ended.
+struct RunStats : models::RunStats {
+  bool finite = true;  // no NaN / Inf found by the watchdog
+  models::EnergyLog energy;
 };
 
-struct RunStats {
-  std::int64_t steps = 0;
-  double wall_seconds = 0.0;
-  double energy_after_excitation = 0.0;  // total energy at the first sample after the pulse ended
-  double energy_final = 0.0;
-  double energy_min = 0.0, energy_max = 0.0;  // over the samples after the pulse
-  // (E_final - E_after) / E_after; max |E - E_after| / E_after over the samples is energy_spread
-  double energy_drift = 0.0;
-  double energy_spread = 0.0;
-  bool finite = true;
-  std::vector<double> energy_time, energy_total;  // samples of the total energy
-};
-
-// Runs `steps` steps (from the model's current step). Stops early, with finite = false, as soon as a
-// sampled state holds NaN or Inf.
+// Runs `steps` steps (from the model's current step) through the shared run driver
+// (models/common/run.hpp), sampling the total energy every hooks.sample_every steps (default 100)
+// before the hook's own sample. The watchdog checks every sample: the run stops early, with finite =
+// false, when the state holds a NaN or Inf or when the energy exceeds 100 x its first sampled value
+// (far above what an excitation adds after its first 100 steps; a lattice past its stability limit
+// flies apart with a finite energy many orders larger).
 template <class T>
-RunStats run(MpsElastic<T>& m, std::int64_t steps, const RunHooks& hooks = {}) {
+RunStats run(MpsElastic<T>& m, std::int64_t steps, RunHooks hooks = {}) {
   RunStats s;
-  const double pulse_end = m.excitation_end_time();
-  const auto t0 = std::chrono::steady_clock::now();
-  bool have_ref = false;
-  auto sample_energy = [&] {
-    const double e = m.energy().total();
-    s.energy_time.push_back(m.time());
-    s.energy_total.push_back(e);
-    if (m.time() > pulse_end) {
-      if (!have_ref) {
-        have_ref = true;
-        s.energy_after_excitation = e;
-        s.energy_min = s.energy_max = e;
-      }
-      s.energy_min = std::min(s.energy_min, e);
-      s.energy_max = std::max(s.energy_max, e);
-    }
-    s.energy_final = e;
-    if (!std::isfinite(e)) s.finite = false;
+  s.energy.reference_time = m.excitation_end_time();
+  if (hooks.sample_every <= 0) hooks.sample_every = 100;
+  hooks.sample = [&s, &m, user = hooks.sample](std::int64_t k) {
+    s.energy.add(m.time(), m.energy().total());
+    if (user) user(k);
   };
-  if (hooks.snapshot && hooks.snapshot_every > 0 && m.step_index() == 0) hooks.snapshot(0);
-  const std::int64_t end = m.step_index() + steps;
-  while (m.step_index() < end && s.finite) {
-    m.step();
-    const std::int64_t k = m.step_index();
-    if (hooks.energy_every > 0 && (k % hooks.energy_every == 0 || k == end)) sample_energy();
-    if (hooks.snapshot && hooks.snapshot_every > 0 && k % hooks.snapshot_every == 0) hooks.snapshot(k);
-    if (hooks.after_step) hooks.after_step(k);
-  }
-  Kokkos::fence();
-  s.steps = m.step_index();
-  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (s.finite) s.finite = m.finite();
-  if (have_ref && s.energy_after_excitation > 0) {
-    s.energy_drift = (s.energy_final - s.energy_after_excitation) / s.energy_after_excitation;
-    s.energy_spread = std::max(s.energy_max - s.energy_after_excitation, s.energy_after_excitation - s.energy_min) /
-                      s.energy_after_excitation;
-  }
+  hooks.watchdog.check_every = hooks.sample_every;
+  if (!(hooks.watchdog.energy_limit > 0)) hooks.watchdog.energy_limit = 100.0;
+  hooks.watchdog.energy = [&s] { return s.energy.total.empty() ? 0.0 : s.energy.total.back(); };
+  static_cast<models::RunStats&>(s) = models::run(m, steps, hooks);
+  s.finite = !s.diverged;
   return s;
 }
 

@@ -133,4 +133,14 @@ inline double critical_stretch(const Config& c) {
   return std::sqrt(4.0 * 3.14159265358979323846 * g / (9.0 * c.material.youngs_modulus * delta));
 }
 
+// Time of the ramp and of the relaxation, in units of the bar's transit time L / c_bar.
+struct TensionSchedule {
+  double ramp = 4.0, hold = 10.0;
+};
+
+inline double bar_wave_speed(const Config& c) { return std::sqrt(c.material.youngs_modulus / c.material.density); }
+
+// The damping that relaxes a bar's fundamental mode fastest (critical damping of omega_1 = pi c / 2L).
+inline double relaxation_damping(const Config& c) { return 3.14159265358979323846 * bar_wave_speed(c) / c.geometry.length; }
+
 }  // namespace polymech::nosb_pd

@@ -13,6 +13,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "nosb_pd/nosb_pd.hpp"
 
@@ -26,16 +28,6 @@ struct TensionResult {
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
 };
-
-// Time of the ramp and of the relaxation, in units of the bar's transit time L / c_bar.
-struct TensionSchedule {
-  double ramp = 4.0, hold = 10.0;
-};
-
-inline double bar_wave_speed(const Config& c) { return std::sqrt(c.material.youngs_modulus / c.material.density); }
-
-// The damping that relaxes a bar's fundamental mode fastest (critical damping of omega_1 = pi c / 2L).
-inline double relaxation_damping(const Config& c) { return 3.14159265358979323846 * bar_wave_speed(c) / c.geometry.length; }
 
 template <class T, int D>
 TensionResult run_tension(NosbPd<T, D>& m, const TensionSchedule& sched = {}) {
@@ -69,8 +61,20 @@ struct OscillationResult {
   double duration = 0.0;
 };
 
-// omega_v from the undamped, uncontrolled pull (the model needs the velocity_viscosity effect with
-// c_v = 0, which computes vbar and applies no force).
+// The configuration of the omega_v identification (seed 003 §4(1): the report identified omega_v on
+// the uncontrolled tension test): the velocity_viscosity effect with c_v = 0 (it computes vbar and
+// applies no force), the weighted function if the scene has it, no damping and no other control.
+inline Config omega_v_identification(Config c) {
+  std::vector<std::string> effects = {"velocity_viscosity"};
+  if (c.effects.has("weighted_function")) effects.push_back("weighted_function");
+  c.effects = EffectSet::resolve(effects, effect_table());
+  c.stabilization.c_v = 0.0;
+  c.stabilization.omega_v = 1.0;
+  c.mass_damping = 0.0;
+  return c;
+}
+
+// omega_v from the undamped, uncontrolled pull (a model of omega_v_identification(scene)).
 template <class T, int D>
 OscillationResult identify_omega_v(NosbPd<T, D>& m, const TensionSchedule& sched = {}) {
   const Config& c = m.config();

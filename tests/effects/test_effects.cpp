@@ -41,7 +41,7 @@ TEST(Effects, DisabledRotationLaunchesAndAllocatesNothing) {
   // the base model did run
   EXPECT_EQ(census.launches("polymech::mps::volumetric_strain"), 20 + 400);  // 20 steps + power iteration
   EXPECT_GE(census.launches("polymech::mps::elastic_acceleration"), 20);
-  EXPECT_EQ(census.launches("polymech::mps::symplectic_euler"), 20);
+  EXPECT_EQ(census.launches("polymech::particles::symplectic_euler"), 20);
   EXPECT_EQ(census.launches("polymech::mps::sample_probes"), 20);
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 
+#include "helmholtz/mesh_import.hpp"
 #include "io/gmsh_msh.hpp"
 #include "support/error_messages.hpp"
 
@@ -66,26 +67,23 @@ $Elements
 $EndElements
 )";
 
-// Reads `text` as mesh.msh and returns the error message (empty if it was accepted).
-std::string error_of(const std::string& text) {
-  polymech::testing::TempDir dir;
-  try {
-    io::read_gmsh_hex_mesh(dir.write("mesh.msh", text));
-  } catch (const io::MeshError& e) {
-    return e.what();
-  }
-  return "";
+// A hexahedral mesh with named boundary faces from a Gmsh file: the neutral reader, then the Helmholtz
+// conversion (which checks inversion and matches the boundary facets to exterior faces).
+polymech::helmholtz::HexMesh read_hex_mesh(const std::filesystem::path& file) {
+  return polymech::helmholtz::hex_mesh_from(io::read_gmsh_mesh(file));
 }
 
+// The reader or the conversion refuses `text` (as mesh.msh) naming "mesh.msh:<line>:" and every fragment.
 void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
-  polymech::testing::expect_message(error_of(text), "mesh.msh", line, fragments);
+  polymech::testing::expect_load_error(text, [](const std::filesystem::path& p) { read_hex_mesh(p); }, line, fragments,
+                                       "mesh.msh");
 }
 
 }  // namespace
 
 TEST(GmshMsh, ReadsHexahedraAndNamedBoundaryFaces) {
   polymech::testing::TempDir dir;
-  const auto m = io::read_gmsh_hex_mesh(dir.write("mesh.msh", kMesh));
+  const auto m = read_hex_mesh(dir.write("mesh.msh", kMesh));
   EXPECT_EQ(m.vertex_count(), 12);
   EXPECT_EQ(m.element_count(), 2);
   ASSERT_EQ(m.boundary_names.size(), 2u);
@@ -102,7 +100,7 @@ TEST(GmshMsh, ReadsHexahedraAndNamedBoundaryFaces) {
 
 TEST(GmshMsh, MissingFile) {
   try {
-    io::read_gmsh_hex_mesh("/nonexistent/mesh.msh");
+    read_hex_mesh("/nonexistent/mesh.msh");
     FAIL() << "no error";
   } catch (const io::MeshError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/mesh.msh: mesh file not found"), std::string::npos) << e.what();
@@ -149,4 +147,19 @@ TEST(GmshMsh, MalformedNumbersAndTruncation) {
   const std::string end = polymech::testing::replace_once(kMesh, "$EndNodes", "$EndNode");
   expect_error(end, polymech::testing::line_of(end, "$EndNode"), {"expected $EndNodes"});
   expect_error("hello\n", 1, {"expected a section header"});
+}
+
+// The neutral reader keeps triangles of named surfaces (a DEM surface may be triangulated); the
+// Helmholtz conversion, which needs quadrilateral faces, refuses them at their line.
+TEST(GmshMsh, TrianglesOfNamedSurfacesAreReadAndTheHexConversionRefusesThem) {
+  std::string t = polymech::testing::replace_once(kMesh, "2 2 3 1\n2 3 6 12 9", "2 2 2 1\n2 3 6 12");
+  polymech::testing::TempDir dir;
+  const auto m = io::read_gmsh_mesh(dir.write("mesh.msh", t));
+  ASSERT_EQ(m.facets.size(), 2u);
+  EXPECT_EQ(m.facets[0].corners, 4);
+  EXPECT_EQ(m.facets[1].corners, 3);
+  EXPECT_EQ(m.groups[m.facets[1].group], "right");
+  EXPECT_EQ(m.hexahedra.size(), 2u);
+  EXPECT_EQ(m.node_count(), 12);
+  expect_error(t, polymech::testing::line_of(t, "2 3 6 12\n"), {"3-node triangle elements on the physical surface 'right'"});
 }

@@ -26,7 +26,7 @@ io::MpsElasticScene cropped_draft_scene(bool rotation) {
   c.width = 0.040;
   c.height = 0.030;
   c.excitation.position = 0.020;
-  const auto source = io::excitation_source_point(c);
+  const auto source = me::excitation_source_point(c);
   auto on_ray = [&](const char* name, double r, double degrees) {
     const double a = degrees * 3.14159265358979323846 / 180.0;
     return me::Probe{name, source.x1 + r * std::sin(a), source.x3 - r * std::cos(a)};
@@ -45,7 +45,7 @@ me::WaveSpeeds measure(bool rotation = true) {
   me::MpsElastic<T> m(s.config);
   const auto stats = me::run(m, s.config.steps);
   EXPECT_TRUE(stats.finite);
-  const auto src = io::excitation_source_point(s.config);
+  const auto src = me::excitation_source_point(s.config);
   return me::measure_wave_speeds(m.probes(), s.config, src.x1, src.x3, {"P_near", "P_far"}, {"S_near", "S_far"});
 }
 

@@ -219,3 +219,42 @@ TEST(VerletList, RebuildsOnlyWhenAParticleMovesMoreThanHalfTheSkin) {
   EXPECT_TRUE(verlet.update(x));
   EXPECT_EQ(verlet.builds(), 2);
 }
+
+// The two-set search: for every query point, the points within the radius, against brute force; query
+// points outside the points' bounding box (clamped to its boundary cells) find what is near them.
+template <int D>
+void expect_two_set_matches_brute_force(const Points<D>& queries, const Points<D>& points, double radius) {
+  nb::NeighborSearch<double, D> search;
+  nb::NeighborList list;
+  search.build_between(to_device<D>(queries), to_device<D>(points), radius, list);
+  auto rows = to_rows(list);
+  ASSERT_EQ(rows.size(), queries.size());
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    std::vector<int> ref;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      double d2 = 0;
+      for (int k = 0; k < D; ++k) d2 += (points[j][k] - queries[i][k]) * (points[j][k] - queries[i][k]);
+      if (d2 <= radius * radius) ref.push_back(static_cast<int>(j));
+    }
+    auto r = rows[i];
+    std::sort(r.begin(), r.end());
+    ASSERT_EQ(r, ref) << "query " << i;
+    pairs += r.size();
+  }
+  EXPECT_EQ(static_cast<std::size_t>(list.num_pairs), pairs);
+  EXPECT_GT(pairs, 0u);
+}
+
+TEST(NeighborSearch, TwoSetsMatchBruteForce) {
+  // queries spill over the points' box by 0.3 on every side
+  auto shift = [](Points<3> p, double by) {
+    for (auto& q : p)
+      for (auto& c : q) c += by;
+    return p;
+  };
+  const auto points = random_cloud<3>(1200, 1.0, 17);
+  const auto queries = shift(random_cloud<3>(500, 1.6, 19), -0.3);
+  for (double radius : {0.05, 0.12, 0.3}) expect_two_set_matches_brute_force<3>(queries, points, radius);
+  expect_two_set_matches_brute_force<2>(random_cloud<2>(300, 1.0, 23), random_cloud<2>(900, 1.0, 29), 0.07);
+}

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <set>
 
-#include "nosb_pd/nosb_pd.hpp"
+#include "nosb_pd/impact.hpp"
 #include "support/kernel_census.hpp"
 
 namespace pm = polymech;
@@ -43,8 +43,9 @@ np::Config plate(const std::vector<std::string>& effects) {
 
 const std::vector<std::string> kAll = {"weighted_function", "velocity_viscosity", "hourglass", "damage", "contact", "short_range"};
 
+// The plate hit by the projectile (the impact's coupled model runs the contact effect).
 void run(const std::vector<std::string>& effects, int steps = 20) {
-  Model m(plate(effects));
+  np::Impact<double, 3> m(plate(effects));
   for (int s = 0; s < steps; ++s) m.step();
   (void)m.energy();
 }
@@ -96,7 +97,7 @@ TEST(PdEffects, TheElasticLawAllocatesNoPlasticState) {
   pm::testing::KernelCensus census;
   auto c = plate({"damage", "contact"});
   c.material.law = np::Law::elastic;
-  Model m(c);
+  np::Impact<double, 3> m(c);
   for (int s = 0; s < 5; ++s) m.step();
   EXPECT_TRUE(census.allocations_containing("plastic_").empty());
   EXPECT_EQ(census.launches("polymech::pd::stress_johnson_cook"), 0);

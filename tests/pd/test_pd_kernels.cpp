@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "contact/projectile_penalty.hpp"
 #include "pd_test_support.hpp"
 
 namespace pm = polymech;
@@ -177,8 +178,8 @@ TEST(PdKernels, WeightedFunctionBetaGivesTheLatticeItsPlainVolume) {
 }
 
 TEST(PdKernels, JohnsonCookReturnMapStaysOnTheYieldSurface) {
-  pm::pd::ElasticConstants<double> el{121.1e9, 75.2e9};
-  pm::pd::JohnsonCook<double> jc;
+  pm::materials::ElasticConstants<double> el{121.1e9, 75.2e9};
+  pm::materials::JohnsonCook<double> jc;
   jc.A = 490e6;
   jc.B = 807e6;
   jc.n = 0.73;
@@ -192,17 +193,17 @@ TEST(PdKernels, JohnsonCookReturnMapStaysOnTheYieldSurface) {
     auto sigma = pm::Mat3<double>::zero();
     double eps = 0, t = 0;
     for (int s = 0; s < 20000; ++s) {
-      const auto st = pm::pd::j2_update(sigma, L, dt, el, jc, eps, 293.0);
+      const auto st = pm::materials::j2_update(sigma, L, dt, el, jc, eps, 293.0);
       sigma = st.sigma;
       eps += st.d_eps_p;
       t += dt;
       if (eps > 0 && s % 5000 == 4999) {
-        const double seq = pm::pd::von_mises(sigma);
-        EXPECT_NEAR(seq, pm::pd::jc_flow_stress(jc, eps, st.d_eps_p / (dt * jc.rate0), 293.0), 1e-6 * seq);
+        const double seq = pm::materials::von_mises(sigma);
+        EXPECT_NEAR(seq, pm::materials::jc_flow_stress(jc, eps, st.d_eps_p / (dt * jc.rate0), 293.0), 1e-6 * seq);
         EXPECT_NEAR(eps, rate * t - seq / (3 * el.mu), 1e-9) << "plastic + elastic = total equivalent strain";
       }
     }
-    EXPECT_NEAR(eps, 2.0 - pm::pd::von_mises(sigma) / (3 * el.mu), 1e-9);
+    EXPECT_NEAR(eps, 2.0 - pm::materials::von_mises(sigma) / (3 * el.mu), 1e-9);
   }
 }
 

@@ -46,7 +46,7 @@ np::Config reduced(bool velocity_viscosity) {
 }  // namespace
 
 TEST(PdPenetration, VelocityViscosityGivesPerforationByPluggingWithBalancedEnergy) {
-  np::NosbPd<double, 3> m(reduced(true));
+  np::Impact<double, 3> m(reduced(true));
   ASSERT_TRUE(m.config().effects.has("velocity_viscosity"));
   np::RunHooks hooks;
   hooks.sample_every = 10;
@@ -71,7 +71,7 @@ TEST(PdPenetration, VelocityViscosityGivesPerforationByPluggingWithBalancedEnerg
 }
 
 TEST(PdPenetration, WithoutZeroEnergyControlTheImpactZoneCollapses) {
-  np::NosbPd<double, 3> m(reduced(false));
+  np::Impact<double, 3> m(reduced(false));
   ASSERT_FALSE(m.config().effects.has("velocity_viscosity"));
   np::RunHooks hooks;
   hooks.sample_every = 10;

@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "io/nosb_pd_scene.hpp"
+#include "support/error_messages.hpp"
 
 namespace fs = std::filesystem;
 namespace io = polymech::io;
@@ -65,33 +66,16 @@ end_time = 2.0e-5
 default = "paper"
 )";
 
+using polymech::testing::replace_once;
+
+// Loads `text` as a PD scene and returns the error message (empty if it loaded).
 std::string error_of(const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("polymech_pd_scene_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-  fs::create_directories(dir);
-  const fs::path file = dir / "scene.toml";
-  std::ofstream(file) << text;
-  std::string msg;
-  try {
-    io::load_nosb_pd_scene(file);
-  } catch (const io::SceneError& e) {
-    msg = e.what();
-  }
-  fs::remove_all(dir);
-  return msg;
+  return polymech::testing::error_message(text, [](const fs::path& p) { io::load_nosb_pd_scene(p); });
 }
 
-std::string edit(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base scene";
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
+// The PD loader refuses `text` naming "scene.toml:<line>:" and every fragment.
 void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
-  const std::string msg = error_of(text);
-  ASSERT_FALSE(msg.empty()) << "the scene loaded, expected an error";
-  EXPECT_TRUE(std::regex_search(msg, std::regex("scene\\.toml:" + std::to_string(line) + ":"))) << msg;
-  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+  polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_nosb_pd_scene(p); }, line, fragments);
 }
 
 }  // namespace
@@ -119,22 +103,22 @@ TEST(PdScenes, ShippedScenesLoadAtEveryAccuracy) {
 }
 
 TEST(PdScenes, BadValuesNameFileLineKeyAndWhatIsAllowed) {
-  expect_error(edit(kBase, "spacing = 2.0e-3", "spacing = -2.0e-3"), 8, {"key 'discretization.spacing'", "must be > 0"});
-  expect_error(edit(kBase, "horizon_ratio = 3.0", "horizon_ratio = 0.8"), 9, {"key 'discretization.horizon_ratio' = 0.8", "must be >= 1"});
-  expect_error(edit(kBase, "horizon_ratio = 3.0", "horizon_ratio = 3.0\nhorizon = 3"), 10,
+  expect_error(replace_once(kBase, "spacing = 2.0e-3", "spacing = -2.0e-3"), 8, {"key 'discretization.spacing'", "must be > 0"});
+  expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 0.8"), 9, {"key 'discretization.horizon_ratio' = 0.8", "must be >= 1"});
+  expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 3.0\nhorizon = 3"), 10,
                {"unknown key 'discretization.horizon'", "horizon_ratio"});
-  expect_error(edit(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["viscosity", "damage", "contact"])"), 5,
+  expect_error(replace_once(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["viscosity", "damage", "contact"])"), 5,
                {"key 'model.effects'", "unknown effect 'viscosity'", "allowed: weighted_function, velocity_viscosity"});
-  expect_error(edit(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["velocity_viscosity", "damage"])"), 34,
+  expect_error(replace_once(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["velocity_viscosity", "damage"])"), 34,
                {"key 'loading.kind'", "needs the \"contact\" effect"});
-  expect_error(edit(kBase, "omega_v = 7.0e5\n", ""), 29, {"stabilization.omega_v", "velocity_viscosity effect needs omega_v > 0"});
-  expect_error(edit(kBase, "clamp_radius = 0.014", "clamp_radius = 0.03"), 35, {"key 'loading.clamp_radius' = 0.03", "0 < clamp_radius < geometry.radius = 0.02"});
-  expect_error(edit(kBase, "critical_stretch = 0.05", "critical_stretch = 0.05\nenergy_release_rate = 1e5"), 26,
+  expect_error(replace_once(kBase, "omega_v = 7.0e5\n", ""), 29, {"stabilization.omega_v", "velocity_viscosity effect needs omega_v > 0"});
+  expect_error(replace_once(kBase, "clamp_radius = 0.014", "clamp_radius = 0.03"), 35, {"key 'loading.clamp_radius' = 0.03", "0 < clamp_radius < geometry.radius = 0.02"});
+  expect_error(replace_once(kBase, "critical_stretch = 0.05", "critical_stretch = 0.05\nenergy_release_rate = 1e5"), 26,
                {"[damage]", "exactly one of critical_stretch"});
-  expect_error(edit(kBase, "end_time = 2.0e-5", "end_time = 2.0e-5\ndt = 1.0e-6"), 46, {"key 'time.dt' = 1e-06", "above the stability limit"});
-  expect_error(edit(kBase, "[material.johnson_cook]\nA = 490.0e6\nB = 807.0e6\nn = 0.73\n", ""), 17,
+  expect_error(replace_once(kBase, "end_time = 2.0e-5", "end_time = 2.0e-5\ndt = 1.0e-6"), 46, {"key 'time.dt' = 1e-06", "above the stability limit"});
+  expect_error(replace_once(kBase, "[material.johnson_cook]\nA = 490.0e6\nB = 807.0e6\nn = 0.73\n", ""), 17,
                {"key 'material.law'", "needs a [material.johnson_cook] table"});
-  expect_error(edit(kBase, R"(kind = "impact")", R"(kind = "drop")"), 34, {"key 'loading.kind' = \"drop\"", R"(allowed: "none", "tension", "impact")"});
+  expect_error(replace_once(kBase, R"(kind = "impact")", R"(kind = "drop")"), 34, {"key 'loading.kind' = \"drop\"", R"(allowed: "none", "tension", "impact")"});
 }
 
 TEST(PdScenes, MissingFileIsAClearError) {

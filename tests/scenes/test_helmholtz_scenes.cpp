@@ -85,7 +85,7 @@ TEST(HelmholtzScenes, BaseSceneLoads) {
   EXPECT_DOUBLE_EQ(s.config.analytic.velocity, 0.014);
   EXPECT_DOUBLE_EQ(s.config.analytic.impedance, 445.9);
   EXPECT_DOUBLE_EQ(s.config.analytic.length, 1.0);
-  EXPECT_EQ(s.accuracy, "paper");  // no [accuracy]: the counts as written
+  EXPECT_EQ(s.header.accuracy, "paper");  // no [accuracy]: the counts as written
 }
 
 TEST(HelmholtzScenes, OrderOutOfRange) {

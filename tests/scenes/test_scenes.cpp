@@ -12,6 +12,8 @@
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
+#include "io/registry.hpp"
+#include "support/error_messages.hpp"
 #include "io/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -57,57 +59,21 @@ x3 = 0.002
 default = "paper"
 )";
 
-class TempScene {
- public:
-  explicit TempScene(const std::string& text, const std::string& name = "scene.toml") {
-    dir_ = fs::temp_directory_path() / ("polymech_scene_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-    path_ = dir_ / name;
-    std::ofstream(path_) << text;
-  }
-  ~TempScene() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  const fs::path& path() const { return path_; }
+using polymech::testing::replace_once;
 
- private:
-  fs::path dir_, path_;
-};
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base scene";
-  if (at != std::string::npos) s.replace(at, from.size(), to);
-  return s;
-}
-
-// Loads `text` and returns the error message (empty if it loaded).
-std::string error_of(const std::string& text) {
-  TempScene t(text);
-  try {
-    io::load_mps_elastic_scene(t.path());
-  } catch (const io::SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-// The message starts with "<file>:<line>:" and contains every fragment.
+// The MPS loader refuses `text` naming "scene.toml:<line>:" and every fragment.
 void expect_error(const std::string& text, int line, const std::vector<std::string>& fragments) {
-  const std::string msg = error_of(text);
-  ASSERT_FALSE(msg.empty()) << "the scene loaded, expected an error";
-  EXPECT_TRUE(std::regex_search(msg, std::regex("scene\\.toml:" + std::to_string(line) + ":"))) << msg;
-  for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+  polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_mps_elastic_scene(p); }, line, fragments);
 }
 
 }  // namespace
 
 TEST(Scenes, BaseSceneLoads) {
-  TempScene t(kBase);
-  const auto s = io::load_mps_elastic_scene(t.path());
-  EXPECT_EQ(s.accuracy, "paper");
+  polymech::testing::TempDir t;
+  const auto s = io::load_mps_elastic_scene(t.write("scene.toml", kBase));
+  EXPECT_EQ(s.header.accuracy, "paper");
+  EXPECT_EQ(s.header.title, "test scene");
+  EXPECT_EQ(s.header.kind, "mps_elastic");
   EXPECT_DOUBLE_EQ(s.config.spacing, 2e-4);
   EXPECT_TRUE(s.config.effects.has("rotation"));
   EXPECT_EQ(s.config.probes.size(), 1u);
@@ -123,86 +89,86 @@ TEST(Scenes, MissingFile) {
   }
 }
 
-TEST(Scenes, SyntaxError) { expect_error(replace(kBase, "width = 0.004", "width = = 0.004"), 7, {"TOML syntax error"}); }
+TEST(Scenes, SyntaxError) { expect_error(replace_once(kBase, "width = 0.004", "width = = 0.004"), 7, {"TOML syntax error"}); }
 
 TEST(Scenes, UnknownKey) {
-  expect_error(replace(kBase, "spacing = 2.0e-4", "spacing = 2.0e-4\nspcing = 1.0"), 10,
+  expect_error(replace_once(kBase, "spacing = 2.0e-4", "spacing = 2.0e-4\nspcing = 1.0"), 10,
                {"unknown key 'domain.spcing'", "allowed in [domain]:", "spacing", "influence_radius"});
-  expect_error(replace(kBase, "[accuracy]", "[acuracy]"), 29, {"unknown key 'acuracy'", "allowed at the top level", "accuracy"});
+  expect_error(replace_once(kBase, "[accuracy]", "[acuracy]"), 29, {"unknown key 'acuracy'", "allowed at the top level", "accuracy"});
 }
 
 TEST(Scenes, UnknownEffect) {
-  expect_error(replace(kBase, R"(effects = ["rotation"])", R"(effects = ["rotation", "gravity"])"), 4,
+  expect_error(replace_once(kBase, R"(effects = ["rotation"])", R"(effects = ["rotation", "gravity"])"), 4,
                {"key 'model.effects'", "unknown effect 'gravity'", "allowed: rotation"});
 }
 
 TEST(Scenes, NegativeSpacing) {
-  expect_error(replace(kBase, "spacing = 2.0e-4", "spacing = -2.0e-4"), 9, {"key 'domain.spacing' = -0.0002", "must be > 0"});
+  expect_error(replace_once(kBase, "spacing = 2.0e-4", "spacing = -2.0e-4"), 9, {"key 'domain.spacing' = -0.0002", "must be > 0"});
 }
 
 TEST(Scenes, InfluenceRadiusBelowSpacing) {
-  expect_error(replace(kBase, "influence_radius = 2.1", "influence_radius = 0.8"), 10,
+  expect_error(replace_once(kBase, "influence_radius = 2.1", "influence_radius = 0.8"), 10,
                {"key 'domain.influence_radius' = 0.8", "must be > 1"});
 }
 
 TEST(Scenes, NonPositiveTimeStep) {
-  expect_error(replace(kBase, "dt = 8.0e-9", "dt = 0.0"), 18, {"key 'time.dt' = 0", "must be > 0"});
-  expect_error(replace(kBase, "dt = 8.0e-9", "dt = -1e-9"), 18, {"key 'time.dt'", "must be > 0"});
+  expect_error(replace_once(kBase, "dt = 8.0e-9", "dt = 0.0"), 18, {"key 'time.dt' = 0", "must be > 0"});
+  expect_error(replace_once(kBase, "dt = 8.0e-9", "dt = -1e-9"), 18, {"key 'time.dt'", "must be > 0"});
 }
 
 TEST(Scenes, ProbeOutsideTheDomain) {
-  expect_error(replace(kBase, "x3 = 0.002", "x3 = 0.005"), 27,
+  expect_error(replace_once(kBase, "x3 = 0.002", "x3 = 0.005"), 27,
                {"key 'probes[0].x3' = 0.005", "probe 'A' outside the domain", "0 <= x3 <= height = 0.004"});
 }
 
 TEST(Scenes, TimeStepAboveTheStabilityLimit) {
-  expect_error(replace(kBase, "dt = 8.0e-9", "dt = 4.0e-8"), 18,
+  expect_error(replace_once(kBase, "dt = 8.0e-9", "dt = 4.0e-8"), 18,
                {"key 'time.dt' = 4e-08", "above the stability limit", "allowed: 0 < dt <= 2.4"});
 }
 
 TEST(Scenes, WrongTypeMissingKeyAndBadChoice) {
-  expect_error(replace(kBase, "steps = 100", "steps = \"many\""), 19, {"key 'time.steps'", "must be an integer", "got a string"});
-  expect_error(replace(kBase, "steps = 100", "steps = 1.5"), 19, {"key 'time.steps'", "must be an integer"});
-  expect_error(replace(kBase, "c55 = 80.8e9\n", ""), 12, {"key 'material.c55' is missing", "required"});
-  expect_error(replace(kBase, R"(kind = "point")", R"(kind = "laser")"), 22,
+  expect_error(replace_once(kBase, "steps = 100", "steps = \"many\""), 19, {"key 'time.steps'", "must be an integer", "got a string"});
+  expect_error(replace_once(kBase, "steps = 100", "steps = 1.5"), 19, {"key 'time.steps'", "must be an integer"});
+  expect_error(replace_once(kBase, "c55 = 80.8e9\n", ""), 12, {"key 'material.c55' is missing", "required"});
+  expect_error(replace_once(kBase, R"(kind = "point")", R"(kind = "laser")"), 22,
                {"key 'excitation.kind' = \"laser\"", R"(allowed: "none", "point", "plane_p", "plane_s")"});
-  expect_error(replace(kBase, "[time]\n", "[tim]\n"), 1, {"[time] is missing"});
+  expect_error(replace_once(kBase, "[time]\n", "[tim]\n"), 1, {"[time] is missing"});
 }
 
 TEST(Scenes, AccuracyPresetsScaleSpacingTimeStepAndSteps) {
-  TempScene t(kBase);
+  polymech::testing::TempDir t;
+  const auto path = t.write("scene.toml", kBase);
   io::MpsSceneOptions o;
   o.accuracy = "standard";  // x2
-  const auto s = io::load_mps_elastic_scene(t.path(), o);
+  const auto s = io::load_mps_elastic_scene(path, o);
   EXPECT_DOUBLE_EQ(s.config.spacing, 4e-4);
   EXPECT_DOUBLE_EQ(s.config.dt, 16e-9);
   EXPECT_EQ(s.config.steps, 50);
   o.accuracy = "exquisite";
   try {
-    io::load_mps_elastic_scene(t.path(), o);
+    io::load_mps_elastic_scene(path, o);
     FAIL() << "no error";
   } catch (const io::SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("accuracy 'exquisite' is unknown; allowed: draft, standard, paper"), std::string::npos);
   }
 }
 
-// Every scene shipped under scenes/ loads at its default accuracy.
+// Every scene shipped under scenes/ loads at its default accuracy, through the registry of scene kinds.
 TEST(Scenes, EveryShippedSceneLoads) {
-  const std::map<std::string, std::function<void(const fs::path&)>> loaders = {
-      {"mps_elastic", [](const fs::path& p) { io::load_mps_elastic_scene(p); }},
-      {"nosb_pd", [](const fs::path& p) { io::load_nosb_pd_scene(p); }},
-      {"helmholtz", [](const fs::path& p) { io::load_helmholtz_scene(p); }},
-  };
   int count = 0;
   for (const auto& e : fs::recursive_directory_iterator(source_dir() / "scenes")) {
     if (e.path().extension() != ".toml") continue;
     SCOPED_TRACE(e.path().string());
-    const io::Scene scene = io::Scene::load(e.path());
-    const std::string kind = scene.root().table("model").string("kind");
-    auto it = loaders.find(kind);
-    ASSERT_NE(it, loaders.end()) << "no loader for model kind '" << kind << "' in this test";
-    EXPECT_NO_THROW(it->second(e.path()));
+    const io::SceneKind& kind = io::scene_kind_of(e.path());
+    EXPECT_NO_THROW(kind.check(e.path()));
+    EXPECT_NE(std::find(kind.apps.begin(), kind.apps.end(), kind.app_for(e.path())), kind.apps.end());
     ++count;
   }
   EXPECT_GE(count, 1);
+}
+
+TEST(Scenes, UnknownModelKindNamesTheKnownOnes) {
+  polymech::testing::expect_load_error(
+      replace_once(kBase, R"(kind = "mps_elastic")", R"(kind = "mps_plastic")"), [](const fs::path& p) { io::scene_kind_of(p); },
+      3, {"key 'model.kind' = \"mps_plastic\"", "allowed: \"mps_elastic\", \"nosb_pd\", \"helmholtz\""});
 }

@@ -1,5 +1,6 @@
-// Helpers for tests of bad input (scenes, meshes): temporary files, one-line edits of a valid text, and
-// the check that an error message names "<file>:<line>:" and says what is allowed.
+// Helpers for tests of bad input (scenes, meshes): temporary files, one-line edits of a valid text, a
+// loader's error for a text, and the check that an error message names "<file>:<line>:" and says what
+// is allowed.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -63,6 +64,27 @@ inline void expect_message(const std::string& msg, const std::string& file_name,
     EXPECT_TRUE(std::regex_search(msg, std::regex(escaped + ":" + std::to_string(line) + ":"))) << msg;
   }
   for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "missing '" << f << "' in: " << msg;
+}
+
+// The message of the error load(path) throws for `text` written as <name> in a folder of the test's
+// own ("" if it loaded).
+template <class Load>
+std::string error_message(const std::string& text, Load&& load, const std::string& name = "scene.toml") {
+  TempDir dir;
+  const auto path = dir.write(name, text);
+  try {
+    load(path);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// load() refuses `text` with a message naming "<name>:<line>:" and containing every fragment.
+template <class Load>
+void expect_load_error(const std::string& text, Load&& load, int line, const std::vector<std::string>& fragments,
+                       const std::string& name = "scene.toml") {
+  expect_message(error_message(text, load, name), name, line, fragments);
 }
 
 }  // namespace polymech::testing

@@ -1,26 +1,15 @@
-// Constitutive laws of the NOSB model (device functions, always on 3x3 tensors; 2D is plane strain
-// with F33 = 1):
-//
-//  - St. Venant-Kirchhoff: Green-Lagrange strain E = (F^T F - I)/2, S = lambda tr(E) I + 2 mu E,
-//    first Piola-Kirchhoff stress P = F S (seed 003 §1: "Green-Lagrange strain and a constitutive law").
-//  - J2 elasto-plasticity with Johnson-Cook hardening, strain-rate and thermal softening (Johnson &
-//    Cook 1983): sigma_y = (A + B eps_p^n)(1 + C ln(rate / rate0))(1 - T*^m), in a hypoelastic
-//    rate form on the Cauchy stress with the Jaumann rate (objective for the large rotations of a
-//    plug), radial return, adiabatic heating dT = chi sigma_y d eps_p / (rho c_p) (Taylor-Quinney);
-//    P = J sigma F^-T.
+// J2 elasto-plasticity with Johnson-Cook hardening, strain-rate and thermal softening (Johnson & Cook
+// 1983): sigma_y = (A + B eps_p^n)(1 + C ln(rate / rate0))(1 - T*^m), in a hypoelastic rate form on the
+// Cauchy stress with the Jaumann rate (objective for the large rotations of a plug), radial return,
+// adiabatic heating dT = chi sigma_y d eps_p / (rho c_p) (Taylor-Quinney); P = J sigma F^-T. Used by
+// peridynamics (seed 003) and any method that has a deformation gradient and its rate.
 #pragma once
 
 #include <limits>
 
-#include "core/small_math.hpp"
+#include "materials/elastic.hpp"
 
-namespace polymech::pd {
-
-template <class T>
-struct ElasticConstants {
-  T lambda = T(0), mu = T(0);
-  KOKKOS_INLINE_FUNCTION T bulk() const { return lambda + T(2) / T(3) * mu; }
-};
+namespace polymech::materials {
 
 template <class T>
 struct JohnsonCook {
@@ -32,35 +21,6 @@ struct JohnsonCook {
   T chi = T(0.9);                   // Taylor-Quinney coefficient
   KOKKOS_INLINE_FUNCTION bool thermal() const { return T_melt > T_room; }
 };
-
-// seed 003 §1 (Green-Lagrange strain, St. Venant-Kirchhoff): P = F S.
-template <class T>
-KOKKOS_INLINE_FUNCTION Mat3<T> green_lagrange(const Mat3<T>& F) {
-  Mat3<T> E = transpose(F) * F;
-  for (int k = 0; k < 3; ++k) E.a[k][k] -= T(1);
-  return T(0.5) * E;
-}
-template <class T>
-KOKKOS_INLINE_FUNCTION Mat3<T> svk_second_pk(const Mat3<T>& E, const ElasticConstants<T>& c) {
-  Mat3<T> S = (T(2) * c.mu) * E;
-  const T le = c.lambda * trace(E);
-  for (int k = 0; k < 3; ++k) S.a[k][k] += le;
-  return S;
-}
-template <class T>
-KOKKOS_INLINE_FUNCTION Mat3<T> svk_first_pk(const Mat3<T>& F, const ElasticConstants<T>& c) {
-  return F * svk_second_pk(green_lagrange(F), c);
-}
-// Strain energy density W = lambda/2 (tr E)^2 + mu E:E per reference volume.
-template <class T>
-KOKKOS_INLINE_FUNCTION T svk_energy(const Mat3<T>& F, const ElasticConstants<T>& c) {
-  const Mat3<T> E = green_lagrange(F);
-  T ee = T(0);
-  for (int r = 0; r < 3; ++r)
-    for (int s = 0; s < 3; ++s) ee += E.a[r][s] * E.a[r][s];
-  const T t = trace(E);
-  return T(0.5) * c.lambda * t * t + c.mu * ee;
-}
 
 // Johnson-Cook flow stress at plastic strain eps, rate ratio rate/rate0 (>= 1 counts) and temperature.
 template <class T>
@@ -117,27 +77,6 @@ KOKKOS_INLINE_FUNCTION T jc_return(const JohnsonCook<T>& jc, T mu, T seq_trial, 
   return d;
 }
 
-// Deviator and von Mises equivalent stress.
-template <class T>
-KOKKOS_INLINE_FUNCTION Mat3<T> deviator(const Mat3<T>& s) {
-  Mat3<T> d = s;
-  const T p = trace(s) / T(3);
-  for (int k = 0; k < 3; ++k) d.a[k][k] -= p;
-  return d;
-}
-template <class T>
-KOKKOS_INLINE_FUNCTION T double_dot(const Mat3<T>& a, const Mat3<T>& b) {
-  T s = T(0);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) s += a.a[r][c] * b.a[r][c];
-  return s;
-}
-template <class T>
-KOKKOS_INLINE_FUNCTION T von_mises(const Mat3<T>& s) {
-  const Mat3<T> d = deviator(s);
-  return kx::sqrt(T(1.5) * double_dot(d, d));
-}
-
 // Result of one J2 update.
 template <class T>
 struct J2Step {
@@ -183,4 +122,19 @@ KOKKOS_INLINE_FUNCTION T elastic_energy_of_stress(const Mat3<T>& sigma, const El
   return p * p / (T(2) * c.bulk()) + double_dot(s, s) / (T(4) * c.mu);
 }
 
-}  // namespace polymech::pd
+// The J2 / Johnson-Cook law as a struct. A rate law: it needs the velocity gradient L of the step and
+// keeps per-point history (Cauchy stress, equivalent plastic strain, temperature), which the method
+// stores; `stored_energy` is the elastic energy density of a stress.
+template <class T>
+struct J2JohnsonCook {
+  static constexpr bool rate_form = true;
+  ElasticConstants<T> elastic;
+  JohnsonCook<T> hardening;
+
+  KOKKOS_INLINE_FUNCTION J2Step<T> update(const Mat3<T>& sigma, const Mat3<T>& L, T dt, T eps, T temperature) const {
+    return j2_update(sigma, L, dt, elastic, hardening, eps, temperature);
+  }
+  KOKKOS_INLINE_FUNCTION T stored_energy(const Mat3<T>& sigma) const { return elastic_energy_of_stress(sigma, elastic); }
+};
+
+}  // namespace polymech::materials

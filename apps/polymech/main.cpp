@@ -1,0 +1,57 @@
+// Runs any scene: reads its [model].kind, finds the kind's loader and runner in the registry
+// (io/registry.hpp), checks the scene, and hands the whole command line to the app that runs it
+// (mps_point_source or mps_harmonics, pd_tension or pd_penetration, helmholtz), next to this binary.
+//   polymech --scene scenes/pd/penetration_303.toml [the app's options ...]
+//   polymech --list
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "apps/common/app.hpp"
+#include "io/registry.hpp"
+
+namespace pm = polymech;
+
+int main(int argc, char** argv) {
+  std::string scene;
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    if (a == "--list" || a == "--help" || a == "-h") {
+      std::printf("polymech --scene FILE [options of the app that runs it]\nscene kinds:\n");
+      for (const auto& kind : pm::io::scene_kinds()) {
+        std::string apps;
+        for (const auto& app : kind.apps) apps += (apps.empty() ? "" : ", ") + app;
+        std::printf("  %-12s %s (apps: %s)\n", kind.kind.c_str(), kind.description.c_str(), apps.c_str());
+      }
+      return 0;
+    }
+    if (a == "--scene" && k + 1 < argc) scene = argv[k + 1];
+    if (a.rfind("--scene=", 0) == 0) scene = a.substr(8);
+  }
+  if (scene.empty()) {
+    std::fprintf(stderr, "polymech: error: give --scene FILE (polymech --list shows the scene kinds)\n");
+    return 2;
+  }
+  std::string app;
+  const int rc = pm::apps::guarded("polymech", [&] {
+    pm::apps::KokkosSession kokkos(1);  // the loaders check stability limits with the models' kernels
+    const pm::io::SceneKind& kind = pm::io::scene_kind_of(scene);
+    app = kind.app_for(scene);
+    return 0;
+  });
+  if (rc != 0) return rc;
+  const std::filesystem::path self = std::filesystem::path(argv[0]).parent_path();
+  const std::string exe = (self.empty() ? std::filesystem::path(app) : self / app).string();
+  std::vector<char*> args = {const_cast<char*>(exe.c_str())};
+  for (int k = 1; k < argc; ++k) args.push_back(argv[k]);
+  args.push_back(nullptr);
+  std::fprintf(stderr, "[polymech] %s -> %s\n", scene.c_str(), app.c_str());
+  execv(exe.c_str(), args.data());
+  std::fprintf(stderr, "polymech: failed: cannot run %s: %s\n", exe.c_str(), std::strerror(errno));
+  return 1;
+}

@@ -1,0 +1,47 @@
+#include "io/registry.hpp"
+
+#include "io/helmholtz_scene.hpp"
+#include "io/mps_elastic_scene.hpp"
+#include "io/nosb_pd_scene.hpp"
+
+namespace polymech::io {
+
+namespace {
+
+std::string mps_app(const std::filesystem::path& file) {
+  const auto s = load_mps_elastic_scene(file);
+  return s.config.crack.mode == mps_elastic::CrackMode::none ? "mps_point_source" : "mps_harmonics";
+}
+
+std::string pd_app(const std::filesystem::path& file) {
+  const auto s = load_nosb_pd_scene(file);
+  return s.config.loading == nosb_pd::Loading::tension ? "pd_tension" : "pd_penetration";
+}
+
+}  // namespace
+
+const std::vector<SceneKind>& scene_kinds() {
+  static const std::vector<SceneKind> kinds = {
+      {"mps_elastic", "MPS elastic waves in 2D plane strain, with crack-face contact (seed 000)",
+       {"mps_point_source", "mps_harmonics"}, [](const std::filesystem::path& f) { load_mps_elastic_scene(f); }, mps_app},
+      {"nosb_pd", "non-ordinary state-based peridynamics, tension and plate perforation (seed 003)",
+       {"pd_tension", "pd_penetration"}, [](const std::filesystem::path& f) { load_nosb_pd_scene(f); }, pd_app},
+      {"helmholtz", "matrix-free high-order FEM Helmholtz (seed 002 paper 3)", {"helmholtz"},
+       [](const std::filesystem::path& f) { load_helmholtz_scene(f); },
+       [](const std::filesystem::path&) { return std::string("helmholtz"); }},
+  };
+  return kinds;
+}
+
+const SceneKind& scene_kind_of(const std::filesystem::path& file) {
+  const Scene scene = Scene::load(file);
+  const SceneTable root = scene.root();
+  std::vector<std::string> names;
+  for (const auto& k : scene_kinds()) names.push_back(k.kind);
+  const std::string kind = root.table("model").choice("kind", names);
+  for (const auto& k : scene_kinds())
+    if (k.kind == kind) return k;
+  throw SceneError(file.string() + ": unknown model kind '" + kind + "'");  // unreachable: choice() checked it
+}
+
+}  // namespace polymech::io

@@ -1,0 +1,190 @@
+// One explicit run driver for every model: steps, progress, field snapshots, samples (energies, a
+// projectile, ...), stop conditions, and a watchdog that stops a run that went bad with the step, the
+// first bad particle and where it is, and hands the last good state to the snapshot writer. Models do
+// no I/O: what a hook prints or writes is the app's business.
+//
+// The model needs step(), step_index(), time(), and for the watchdog health() -> Health (all finite?
+// the first bad particle and its position) and, to keep the last good state, state() -> const
+// StateRegistry& and set_step_index().
+#pragma once
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "common/state.hpp"
+
+namespace polymech::models {
+
+// What the watchdog learns from a model: the first particle (or DoF) whose state is not finite or has
+// left the range the model holds for it (an MPS particle moved more than half a spacing).
+struct Health {
+  bool finite = true;                      // false: the state is bad
+  std::int64_t first_bad = -1;             // index of the first bad particle / DoF (-1: none)
+  std::string what = "particle";           // what first_bad counts
+  std::string problem = "is not finite";   // what is wrong with it
+  double position[3] = {0, 0, 0};          // where it is (reference position)
+};
+
+struct Watchdog {
+  std::int64_t check_every = 50;   // steps between checks (0: never), after that step's sample
+  // the run has diverged once the energy the `energy` hook reports is not finite or (energy_limit > 0)
+  // exceeds energy_limit x the first positive value it reported (an explicit scheme above its
+  // stability limit does not always reach NaN: an MPS lattice that flies apart loses its interactions
+  // and keeps a finite, absurd energy: the model's health check catches that first)
+  double energy_limit = 0.0;
+  std::function<double()> energy;  // total accounted energy (may return the last sample's)
+  // keep a copy of the state at the last good check, and snapshot it when the run goes bad
+  bool keep_last_good = false;
+};
+
+struct RunHooks {
+  std::function<void(std::int64_t step)> after_step;  // progress
+  std::int64_t snapshot_every = 0;                    // 0: never
+  // called at step 0, every snapshot_every steps, when a stop condition ends the run, and with the
+  // last good state when the watchdog ends it
+  std::function<void(std::int64_t step)> snapshot;
+  std::int64_t sample_every = 0;                      // 0: never
+  bool sample_at_start = false;                       // also sample the initial state
+  std::function<void(std::int64_t step)> sample;      // every sample_every steps and at the end
+  std::function<bool()> stop;                         // asked after each sample: true ends the run
+  Watchdog watchdog;
+};
+
+struct RunStats {
+  std::int64_t steps = 0;          // the model's step index at the end
+  double wall_seconds = 0.0;
+  bool stopped = false;            // a stop condition ended the run
+  bool diverged = false;           // the watchdog ended it
+  std::string reason;              // why it diverged, in words
+  std::int64_t bad_step = -1;      // the step at which the watchdog found it
+  Health health;                   // the first bad particle
+  std::int64_t last_good_step = -1;  // the step of the last good state (snapshotted when kept)
+};
+
+namespace detail {
+inline std::string number(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+inline std::string describe(const Health& h, int dim) {
+  std::string s = h.what + " " + std::to_string(h.first_bad);
+  if (h.what == "particle") {
+    s += " at (";
+    for (int k = 0; k < dim; ++k) s += (k ? ", " : "") + number(h.position[k]);
+    s += ")";
+  }
+  return s + " " + h.problem;
+}
+}  // namespace detail
+
+// Runs `steps` steps from the model's current step.
+template <class Model>
+RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
+  RunStats s;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Watchdog& wd = hooks.watchdog;
+  StateRegistry::Backup last_good;
+  double initial_energy = 0.0;  // the first positive energy the hook reports
+  auto check_energy = [&]() {
+    if (!wd.energy) return true;
+    const double e = wd.energy();
+    if (!(initial_energy > 0) && e > 0) initial_energy = e;
+    if (!std::isfinite(e)) {
+      s.reason = "the accounted energy is not finite";
+      return false;
+    }
+    if (!(wd.energy_limit > 0) || !(initial_energy > 0) || !(e > wd.energy_limit * initial_energy)) return true;
+    s.reason = "the accounted energy " + detail::number(e) + " J exceeds " + detail::number(wd.energy_limit) +
+               " x the initial " + detail::number(initial_energy) + " J";
+    return false;
+  };
+  auto healthy = [&]() {
+    const Health h = m.health();
+    if (h.finite) return true;
+    s.health = h;
+    s.reason = "the first bad " + detail::describe(h, Model::dimension);
+    return false;
+  };
+  auto keep = [&]() {
+    if (!wd.keep_last_good) return;
+    m.state().save(last_good);
+    s.last_good_step = m.step_index();
+  };
+
+  m.prepare();
+  if (hooks.sample && hooks.sample_at_start) hooks.sample(m.step_index());
+  if (!check_energy()) s.diverged = true;
+  keep();
+  if (hooks.snapshot && hooks.snapshot_every > 0 && m.step_index() == 0) hooks.snapshot(0);
+  const std::int64_t end = m.step_index() + steps;
+  while (m.step_index() < end && !s.diverged && !s.stopped) {
+    m.step();
+    const std::int64_t k = m.step_index();
+    const bool sample_due = hooks.sample_every > 0 && (k % hooks.sample_every == 0 || k == end);
+    if (sample_due && hooks.sample) hooks.sample(k);
+    if (wd.check_every > 0 && (k % wd.check_every == 0 || k == end)) {
+      if (healthy() && check_energy())
+        keep();
+      else
+        s.diverged = true;
+    }
+    if (s.diverged) {
+      s.bad_step = k;
+      break;
+    }
+    if (sample_due && hooks.stop) s.stopped = hooks.stop();
+    if (hooks.snapshot && hooks.snapshot_every > 0 && (k % hooks.snapshot_every == 0 || s.stopped)) hooks.snapshot(k);
+    if (hooks.after_step) hooks.after_step(k);
+  }
+  Kokkos::fence();
+  if (!s.diverged && wd.check_every > 0 && !healthy()) {
+    s.diverged = true;
+    s.bad_step = m.step_index();
+  }
+  if (s.diverged && !last_good.empty()) {
+    m.state().restore(last_good);
+    m.set_step_index(s.last_good_step);
+    if (hooks.snapshot) hooks.snapshot(s.last_good_step);
+  }
+  s.steps = m.step_index();
+  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+// The energy record of a run: samples of the total, and its drift and spread over the samples taken
+// after a reference time (the end of an excitation; by default every sample counts, the first is the
+// reference).
+struct EnergyLog {
+  double reference_time = -std::numeric_limits<double>::infinity();
+  std::vector<double> time, total;
+  double reference = 0.0, minimum = 0.0, maximum = 0.0, last = 0.0;
+  bool have_reference = false;
+
+  void add(double t, double e) {
+    time.push_back(t);
+    total.push_back(e);
+    last = e;
+    if (!(t > reference_time)) return;
+    if (!have_reference) {
+      have_reference = true;
+      reference = minimum = maximum = e;
+    }
+    minimum = std::min(minimum, e);
+    maximum = std::max(maximum, e);
+  }
+  // (E_last - E_ref) / E_ref
+  double drift() const { return have_reference && reference > 0 ? (last - reference) / reference : 0.0; }
+  // max |E - E_ref| / E_ref over the samples after the reference
+  double spread() const {
+    return have_reference && reference > 0 ? std::max(maximum - reference, reference - minimum) / reference : 0.0;
+  }
+};
+
+}  // namespace polymech::models

@@ -1,0 +1,80 @@
+// The state of a model as a list of named Views: everything a step reads that it did not compute in
+// the same step (displacements, velocities, accelerations of velocity Verlet, bond and contact states,
+// material history). A model registers its Views once, after allocating them; the run driver's
+// watchdog keeps a copy of the last good state with it, and checkpoints write it.
+//
+// Views of effects that are off are empty and are not registered: a disabled effect costs nothing
+// here either.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace polymech::models {
+
+class StateRegistry {
+ public:
+  // A copy of every registered View, in the same memory space (the watchdog's last good state).
+  class Backup {
+   public:
+    bool empty() const { return restore_.empty(); }
+
+   private:
+    friend class StateRegistry;
+    std::vector<std::function<void()>> save_, restore_;
+  };
+
+  template <class View>
+  void add(const std::string& name, const View& v) {
+    if (v.size() == 0) return;
+    Entry e;
+    e.name = name;
+    e.bytes = v.span() * sizeof(typename View::value_type);
+    e.make_backup = [v](std::vector<std::function<void()>>& save, std::vector<std::function<void()>>& restore) {
+      auto copy = Kokkos::create_mirror(typename View::memory_space(), v);
+      save.push_back([v, copy] { Kokkos::deep_copy(copy, v); });
+      restore.push_back([v, copy] { Kokkos::deep_copy(v, copy); });
+    };
+    entries_.push_back(std::move(e));
+  }
+
+  // Everything `other` holds, after what this one holds (a coupled model's two models).
+  void append(const StateRegistry& other) { entries_.insert(entries_.end(), other.entries_.begin(), other.entries_.end()); }
+
+  std::size_t size() const { return entries_.size(); }
+  std::size_t bytes() const {
+    std::size_t b = 0;
+    for (const auto& e : entries_) b += e.bytes;
+    return b;
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> n;
+    for (const auto& e : entries_) n.push_back(e.name);
+    return n;
+  }
+
+  // Allocates backup storage for every View (once) and copies the state into it.
+  void save(Backup& b) const {
+    if (b.save_.empty())
+      for (const auto& e : entries_) e.make_backup(b.save_, b.restore_);
+    for (auto& s : b.save_) s();
+    Kokkos::fence();
+  }
+  void restore(const Backup& b) const {
+    for (auto& r : b.restore_) r();
+    Kokkos::fence();
+  }
+
+ private:
+  struct Entry {
+    std::string name;
+    std::size_t bytes = 0;
+    std::function<void(std::vector<std::function<void()>>&, std::vector<std::function<void()>>&)> make_backup;
+  };
+  std::vector<Entry> entries_;
+};
+
+}  // namespace polymech::models
