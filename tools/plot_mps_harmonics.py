@@ -18,12 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
 
 
 def main():
@@ -32,7 +28,7 @@ def main():
     comp, f0 = s["component"], s["drive_frequency"]
     title = f"{s['title']}\n{s['accuracy']} accuracy, {s['particles']} particles, {s['precision']}"
 
-    th = read_csv(os.path.join(run, "time_history.csv"))
+    th = load_csv(os.path.join(run, "time_history.csv"))
     fig, ax = plt.subplots(figsize=(8, 3.6))
     ax.plot(th["time"] * 1e6, th[comp + "_intact"] / 1e-9, "b-", lw=1, label="no crack")
     ax.plot(th["time"] * 1e6, th[comp + "_crack"] / 1e-9, "r--", lw=1, label="crack")
@@ -47,7 +43,7 @@ def main():
     fig.savefig(os.path.join(run, "time_history.png"), dpi=110)
     plt.close(fig)
 
-    sp = read_csv(os.path.join(run, "spectrum.csv"))
+    sp = load_csv(os.path.join(run, "spectrum.csv"))
     fig, ax = plt.subplots(figsize=(8, 3.8))
     fmhz = sp["frequency"] / 1e6
     ax.semilogy(fmhz, np.maximum(sp["intact"], 1e-6), "b-", lw=1, label="no crack")
@@ -68,7 +64,7 @@ def main():
 
     path = os.path.join(run, "contact_states.csv")
     if os.path.exists(path):
-        cs = read_csv(path)
+        cs = load_csv(path)
         fig, ax = plt.subplots(figsize=(8, 3))
         t = cs["time"] * 1e6
         ax.stackplot(t, cs["separation"], cs["stick"], cs["slip"], labels=["separation", "stick", "slip"],

@@ -18,12 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
 
 
 def lattice_image(points, values):
@@ -62,7 +58,7 @@ def plot_snapshots(run, out):
 def main():
     run = sys.argv[1] if len(sys.argv) > 1 else "out/mps_point_source"
     summary = json.load(open(os.path.join(run, "summary.json")))
-    probes = read_csv(os.path.join(run, "probes.csv"))
+    probes = load_csv(os.path.join(run, "probes.csv"))
     t_us = probes["time"] * 1e6
     u0 = 10e-9
 

@@ -16,19 +16,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
 
 
 def main():
     run = sys.argv[1] if len(sys.argv) > 1 else "out/pd_penetration"
     summary = json.load(open(os.path.join(run, "summary.json")))
-    p = read_csv(os.path.join(run, "projectile.csv"))
-    e = read_csv(os.path.join(run, "energy.csv"))
+    p = load_csv(os.path.join(run, "projectile.csv"))
+    e = load_csv(os.path.join(run, "energy.csv"))
     t = p["time"] * 1e6
 
     fig, ax = plt.subplots(1, 2, figsize=(10, 3.8))

@@ -18,15 +18,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import load_csv  # noqa: E402
+
 V_EXPERIMENT, VR_EXPERIMENT, V_BL = 303.5, 200.6, 184.5
 A_RECHT_IPSON = 0.197 / (0.197 + 7850 * np.pi * 0.01**2 * 0.012)
-
-
-def read_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
 
 
 def label_of(c, sel):
@@ -35,7 +31,7 @@ def label_of(c, sel):
 
 
 def cv_figure(path):
-    c = read_csv(path)
+    c = load_csv(path)
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for h in np.unique(c["spacing"]):
         sel = (c["spacing"] == h) & (np.abs(c["velocity"] - V_EXPERIMENT) < 0.05)
@@ -55,7 +51,7 @@ def cv_figure(path):
 
 
 def velocity_figure(path):
-    c = read_csv(path)
+    c = load_csv(path)
     fig, ax = plt.subplots(figsize=(5.5, 4))
     v = np.linspace(V_BL, 320, 100)
     ax.plot(v, A_RECHT_IPSON * np.sqrt(np.maximum(v**2 - V_BL**2, 0)), "k:", label="Recht-Ipson, v_bl = 184.5 m/s")
