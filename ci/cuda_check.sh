@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The CUDA compile gate: build every kernel, model, kernel test and benchmark with nvcc_wrapper against
-# a CUDA-enabled Kokkos, warnings as errors for project code. Nothing runs on a GPU; the test and
-# benchmark binaries are only compiled and linked. io/ and the apps stay host-only (toml++ does not
-# compile under nvcc), so the cuda-check preset sets POLYMECH_WITH_IO=OFF.
+# The CUDA compile gate: build every kernel, model, app, test and benchmark with nvcc_wrapper against a
+# CUDA-enabled Kokkos, warnings as errors for project code. io/ (free of Kokkos; toml++ does not
+# compile under nvcc) is compiled by the host compiler through nvcc_wrapper --host-only, and the apps
+# link it. Nothing runs on a GPU; the binaries are only compiled and linked.
 #   bash ci/cuda_check.sh
 # Steps (each skipped when already done, so a second run only re-checks the build):
 #   1. Debian's CUDA 11.8 toolkit (non-free) and g++-11 via the private apt sources (ci/lib.sh);
@@ -42,19 +42,21 @@ if [ ! -f "$build_dir/build.ninja" ]; then
     die "CUDA gate: cmake --preset cuda-check failed (log above)"
   fi
 fi
-log "CUDA gate: building preset cuda-check (kernels, models, tests, benchmarks) with nvcc_wrapper"
+log "CUDA gate: building preset cuda-check (kernels, models, apps, tests, benchmarks) with nvcc_wrapper"
 cmake --build --preset cuda-check -j "$POLYMECH_JOBS"
 
-# Every test binary ctest knows and every benchmark must exist, linked (nothing runs: no GPU assumed).
+# Every test binary ctest knows, every benchmark and every app must exist, linked (nothing runs: no GPU
+# assumed).
 missing="$(cd "$build_dir" && ctest --show-only=json-v1 | python3 -c '
 import json, os, sys
 cmds = [t["command"][0] for t in json.load(sys.stdin).get("tests", []) if t.get("command")]
 bench = [os.path.join("bench", f) for f in os.listdir("bench") if f.startswith("bench_")] if os.path.isdir("bench") else []
-if not cmds or not bench:
-    print("(no tests or no benchmarks were configured)")
-for c in sorted(set(cmds)) + sorted(bench):
+apps = [os.path.join("bin", f) for f in os.listdir("bin")] if os.path.isdir("bin") else []
+if not cmds or not bench or not apps:
+    print("(no tests, benchmarks or apps were configured)")
+for c in sorted(set(c for c in cmds if os.path.isabs(c) or "/" in c)) + sorted(bench) + sorted(apps):
     if not (os.path.isfile(c) and os.access(c, os.X_OK)):
         print(c)
 ')"
 [ -z "$missing" ] || die "CUDA gate: not built: $missing"
-log "CUDA gate passed: every kernel, model, test and benchmark builds for CUDA [$((SECONDS - t2)) s]"
+log "CUDA gate passed: every kernel, model, app, test and benchmark builds for CUDA [$((SECONDS - t2)) s]"

@@ -39,13 +39,11 @@ hz::BoundaryKind kind_of(const std::string& s) {
 }  // namespace
 
 HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const HelmholtzSceneOptions& options) {
-  OpenScene opened = open_scene(file, "helmholtz", hz::effect_table(), options.precision);
+  HelmholtzScene out;
+  const OpenScene opened = open_scene(file, "helmholtz", hz::effect_table(), options.precision, out);
   const SceneTable& root = opened.root;
   const SceneTable& model = opened.model;
-  HelmholtzScene out;
-  out.header = opened.header;
   hz::Config& c = out.config;
-  c.effects = out.header.effects;
 
   // [discretization]
   const SceneTable disc = root.table("discretization");

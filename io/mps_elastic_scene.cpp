@@ -31,14 +31,12 @@ std::vector<std::string> probe_pair(const SceneTable& t, const std::string& key,
 }  // namespace
 
 MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const MpsSceneOptions& options) {
-  OpenScene s = open_scene(file, "mps_elastic", me::effect_table(), options.precision);
+  MpsElasticScene out;
+  const OpenScene s = open_scene(file, "mps_elastic", me::effect_table(), options.precision, out);
   const SceneTable& root = s.root;
   const SceneTable& model = s.model;
-  model.finish();
-  MpsElasticScene out;
-  out.header = s.header;
   me::Config& c = out.config;
-  c.effects = out.header.effects;
+  model.finish();
 
   // [accuracy]: preset name -> spacing factor
   out.header.set_accuracy(read_accuracy(root, options.accuracy, options.coarsening));

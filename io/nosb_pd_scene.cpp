@@ -72,14 +72,12 @@ void read_material(const SceneTable& m, np::Config& c) {
 }  // namespace
 
 NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSceneOptions& options) {
-  OpenScene s = open_scene(file, "nosb_pd", np::effect_table(), options.precision);
+  NosbPdScene out;
+  const OpenScene s = open_scene(file, "nosb_pd", np::effect_table(), options.precision, out);
   const SceneTable& root = s.root;
   const SceneTable& model = s.model;
-  NosbPdScene out;
-  out.header = s.header;
   np::Config& c = out.config;
   c.dimension = static_cast<int>(model.integer("dimension", 3, 2, 3));
-  c.effects = out.header.effects;
   model.finish();
 
   // [accuracy]: preset name -> spacing factor

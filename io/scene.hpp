@@ -153,4 +153,14 @@ struct OpenScene {
 OpenScene open_scene(const std::filesystem::path& file, const std::string& kind, const std::vector<EffectSpec>& declared,
                      const std::string& precision = "");
 
+// The same, filling a loader's result: out.header and out.config.effects.
+template <class SceneT>
+OpenScene open_scene(const std::filesystem::path& file, const std::string& kind, const std::vector<EffectSpec>& declared,
+                     const std::string& precision, SceneT& out) {
+  OpenScene s = open_scene(file, kind, declared, precision);
+  out.header = s.header;
+  out.config.effects = s.header.effects;
+  return s;
+}
+
 }  // namespace polymech::io

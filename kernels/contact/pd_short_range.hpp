@@ -44,7 +44,7 @@ struct ShortRangeForce {
     Vec<T, D> yi, L;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(y, i), Vec<T, D>::zero()}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
     const Vec<T, D> d = load<D>(y, j) - acc.yi;
     const T r2 = norm2(d);
     if (r2 >= ds * ds || !(r2 > T(0))) return;
@@ -77,7 +77,7 @@ struct ShortRangeEnergy {
     T s;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(y, i), T(0)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset) const {
     const T r = norm(load<D>(y, j) - acc.yi);
     if (r < ds) acc.s += T(0.25) * c * volume(i) * volume(j) * (ds - r) * (ds - r);
   }

@@ -105,7 +105,7 @@ struct ReferenceBondLengths {
     Vec2<T> xi;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<2>(f.x0, i)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     f.inv_r0(k) = T(1) / norm(load<2>(f.x0, j) - acc.xi);
   }
   KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
@@ -128,7 +128,7 @@ struct ElasticPairSum {
     T s;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {ParticleState<T, Rotation>(f, i), T(0)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     const ElasticPair<T, Rotation> q(acc.pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
     acc.s += Derived::term(q);
   }
@@ -172,7 +172,7 @@ struct ElasticAcceleration {
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
     return {ParticleState<T, Rotation>(f, i), f.e(i), Vec2<T>::zero(), Vec2<T>::zero(), T(0)};
   }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     const ElasticPair<T, Rotation> q(acc.pi, ParticleState<T, Rotation>(f, j), f.inv_r0(k), re);
     acc.vol += ((acc.ei + f.e(j)) * q.w * q.inv_r0 * q.inv_r) * q.r;
     const Vec2<T> shear = (q.w * q.inv_r0 * q.inv_r0) * q.uij;

@@ -51,7 +51,7 @@ struct OperatorRow {
     T s;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {Vec<T, D>::zero(), T(0)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset) const {
     const auto pg = pair_geometry<T, D>(x, x0, i, j, re);
     if constexpr (Op == Operator::laplacian) {
       acc.s += (phi(j) - phi(i)) * pg.w / (pg.r0_len * pg.r0_len);

@@ -28,7 +28,7 @@ struct NumberDensity {
     T sum;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(x, i), T(0)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
     acc.sum += weight(norm(load<D>(x, j) - acc.xi), re);
   }
   KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { n(i) = acc.sum; }

@@ -18,7 +18,7 @@ struct FilterCount {
     Offset count;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {0}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const { acc.count += keep(i, j, k) ? 1 : 0; }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const { acc.count += keep(i, j, k) ? 1 : 0; }
   KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { offsets(i + 1) = acc.count; }
 };
 
@@ -32,7 +32,7 @@ struct FilterFill {
     Offset slot;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {offsets(i)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const {
     if (keep(i, j, k)) neighbors(acc.slot++) = j;
   }
   KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}

@@ -58,7 +58,7 @@ struct DeformationGradient {
     if (Rate || Mean) acc.vi = load<D>(f.v, i);
     return acc;
   }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0;
     const T w = f.bond_weight(k);
     if (Damage) {

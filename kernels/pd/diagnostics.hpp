@@ -32,7 +32,7 @@ struct NonAffineRow {
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const {
     return {load<D>(f.x0, i), load<D>(f.u, i), load_mat<D>(f.F, i), 0.0, 0.0};
   }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     if (damage && !f.bond_intact(k)) return;
     const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0, eta = load<D>(f.u, j) - acc.ui;
     const T w = f.bond_weight(k);

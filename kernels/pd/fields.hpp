@@ -91,7 +91,7 @@ struct BondWeights {
     Vec<T, D> xi0;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const { return {load<D>(x0, i)}; }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     T xi2 = T(0);
     for (int d = 0; d < D; ++d) xi2 += (x0(j, d) - acc.xi0[d]) * (x0(j, d) - acc.xi0[d]);
     out(k) = weight(volume(j), xi2);

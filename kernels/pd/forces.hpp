@@ -67,7 +67,7 @@ struct BondForces {
     if (Hourglass) acc.ui = load<D>(f.u, i);
     return acc;
   }
-  KOKKOS_INLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     if (damage && !f.bond_intact(k)) return;
     const Vec<T, D> xi = load<D>(f.x0, j) - acc.xi0;
     const T w = f.bond_weight(k);
