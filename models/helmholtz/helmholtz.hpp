@@ -29,6 +29,12 @@
 #include "solvers/krylov.hpp"
 
 namespace polymech::helmholtz {
+template <class T>
+class Helmholtz;
+}
+#include "helmholtz/preconditioners.hpp"
+
+namespace polymech::helmholtz {
 
 using CoordinateView = Kokkos::View<double* [3], Kokkos::LayoutRight, MemSpace>;
 
@@ -169,6 +175,10 @@ class Helmholtz {
   double min_jacobian_ratio() const { return jacobian_.min_ratio; }
   double setup_seconds() const { return setup_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
+  // Set-up of the last solve's preconditioner (chebyshev, pmg; included in solve_seconds) and what it was.
+  double preconditioner_seconds() const { return preconditioner_seconds_; }
+  const std::string& preconditioner_description() const { return preconditioner_; }
+  const View1<Index>& constrained_dofs() const { return constrained_; }
   // Typical element size h = (bounding-box volume / elements)^(1/3) (the perturbation scale).
   double mean_element_size() const {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
@@ -237,12 +247,14 @@ class Helmholtz {
   // nodes, so that a thread reuses the DoFs its chunk's elements share while they are in cache (1M DoFs,
   // one thread: p = 2 1.5x, p = 3 1.4x, p = 4 1.4x faster than one element per chunk; p = 1 the same;
   // docs/PERFORMANCE.md), but at least 64 chunks per thread so that the colours still balance.
-  static std::int64_t chunk_size(const Config& c) {
+  // A multiple of the batch size, so that only the last batch of a chunk can be partial.
+  static std::int64_t chunk_size(const Config& c, int batch) {
     if (c.chunk_elements > 0) return c.chunk_elements;
-    if (!Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible) return 1;
+    if (!Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible) return batch;
     const std::int64_t n = c.order + 1;
     const std::int64_t balance = c.mesh.element_count() / (64 * std::max(1, kx::concurrency<ExecSpace>()));
-    return std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), balance));
+    const std::int64_t size = std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), balance));
+    return (size + batch - 1) / batch * batch;
   }
 
   std::string where(Index dof) const {
@@ -264,7 +276,8 @@ class Helmholtz {
   HelmholtzOperator<T> op_;
   View1<C> solution_;
   solvers::SolveResult result_;
-  double setup_seconds_ = 0.0, solve_seconds_ = 0.0;
+  double setup_seconds_ = 0.0, solve_seconds_ = 0.0, preconditioner_seconds_ = 0.0;
+  std::string preconditioner_;
 };
 
 // Member functions that launch kernels are defined out of the class (not inline), so the explicit
@@ -294,7 +307,8 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
 
   // elements in chunks of neighbours (the locality order), the chunks grouped by colour
   const std::int64_t ne = c.mesh.element_count();
-  const std::int64_t per_chunk = chunk_size(c);
+  const int batch = c.batch_elements > 0 ? c.batch_elements : fem::volume_batch<T>();
+  const std::int64_t per_chunk = chunk_size(c, batch);
   const std::int64_t nchunks = (ne + per_chunk - 1) / per_chunk;
   std::vector<std::int64_t> chunk_vertex_offsets(1, 0), chunk_vertices;
   for (std::int64_t k = 0; k < nchunks; ++k) {
@@ -317,6 +331,7 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
     chunk_start.push_back(static_cast<Index>(element_order_.size()));
   }
   el_.order = c.order;
+  el_.batch = batch;
   el_.owned = n;
   el_.ghost = 0;
   el_.color_offsets.assign(offsets.begin(), offsets.end());
@@ -336,7 +351,7 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
       for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(i) + k];
     Kokkos::deep_copy(x_, h);
   }
-  jacobian_ = fem::compute_geometry(el_, x_);
+  jacobian_ = fem::compute_geometry(el_, x_, c.affine_geometry);
   if (!(jacobian_.min_ratio > 0.0))
     throw std::invalid_argument(
         "helmholtz: " + c.mesh.describe_element(element_order_[jacobian_.element]) +
@@ -391,7 +406,24 @@ solvers::SolveResult Helmholtz<T>::solve(const solvers::SolverOptions& options) 
   View1<C> rhs("polymech::helmholtz::rhs", n);
   right_hand_side(rhs, solution_);
   View1<C> inv;
-  if (cfg_.jacobi) {
+  if (cfg_.preconditioner == Preconditioner::chebyshev || cfg_.preconditioner == Preconditioner::pmg) {
+    const auto tp = std::chrono::steady_clock::now();
+    if (cfg_.preconditioner == Preconditioner::chebyshev) {
+      const ChebyshevPreconditioner<T> P(*this, cfg_.shifted);
+      preconditioner_ = P.describe();
+      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
+    } else {
+      const PMultigrid<T> P(*this, cfg_.shifted);
+      preconditioner_ = P.describe();
+      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
+    }
+    Kokkos::fence();
+    solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result_;
+  }
+  if (cfg_.preconditioner == Preconditioner::jacobi) {
     View1<C> diag("polymech::helmholtz::diagonal", n);
     op_.diagonal(diag);
     inv = View1<C>("polymech::helmholtz::inverse_diagonal", n);

@@ -39,7 +39,9 @@ class HelmholtzOperator {
 
   // Bytes the operator keeps (element map, geometric factors, faces, constraint list).
   std::size_t bytes() const {
-    return el_.dofs.span() * sizeof(Index) + el_.geometry.span() * sizeof(T) + imp_.dofs.span() * sizeof(Index) +
+    return el_.dofs.span() * sizeof(Index) + el_.geometry.span() * sizeof(T) +
+           el_.geometry_slot.span() * sizeof(Index) +
+           (el_.affine_batches > 0 ? el_.affine.span() * sizeof(T) : 0) + imp_.dofs.span() * sizeof(Index) +
            imp_.weights.span() * sizeof(T) + imp_.coefficient.span() * sizeof(V) + constrained_.span() * sizeof(Index);
   }
 
