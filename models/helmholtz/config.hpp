@@ -4,14 +4,18 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "effects.hpp"
 #include "helmholtz/mesh.hpp"
+#include "helmholtz/partition.hpp"
 #include "solvers/krylov.hpp"
 
 namespace polymech::helmholtz {
+
+class Communicator;  // helmholtz/parallel.hpp
 
 enum class BoundaryKind {
   rigid,      // dPhi/dn = 0: natural, nothing to integrate (paper §3(3): "rigid elsewhere")
@@ -93,6 +97,9 @@ struct Config {
   bool affine_geometry = true;  // affine batches keep one Jacobian per element (false: factors at every point)
   solvers::SolverOptions solver;
   EffectSet effects;
+  // Domain decomposition: one part per rank of `communicator` (null: one part, no messages).
+  std::shared_ptr<const Communicator> communicator;
+  PartitionMethod partition = PartitionMethod::automatic;
 
   double omega() const { return 2.0 * 3.14159265358979323846 * frequency; }
   double wavenumber() const { return omega() / sound_speed; }

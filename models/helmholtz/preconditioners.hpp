@@ -40,7 +40,7 @@ ShiftedLevel<T> shifted_level(const Helmholtz<T>& m, double shift, int lanczos_s
   ShiftedLevel<T> l;
   const double k = m.config().wavenumber();
   l.order = m.config().order;
-  l.S = HelmholtzOperator<T>(m.op().elements(), {}, m.constrained_dofs(), static_cast<T>(shift * k * k));
+  l.S = m.op().shifted(static_cast<T>(shift * k * k));
   const Index n = l.S.local_size();
   View1<C> d("polymech::helmholtz::shifted_diagonal", n);
   l.S.diagonal(d);
