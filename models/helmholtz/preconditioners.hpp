@@ -90,14 +90,15 @@ fem::Transfer<T> prolongation(const HexDofs& fine, const std::vector<char>& fine
               }
         }
   fem::Transfer<T> t;
-  t.row_ptr = Kokkos::View<Offset*, MemSpace>("polymech::helmholtz::transfer_rows", rows.size() + 1);
+  auto& P = t.matrix;
+  P.row_ptr = Kokkos::View<Offset*, MemSpace>("polymech::helmholtz::transfer_rows", rows.size() + 1);
   Offset nnz = 0;
   for (const auto& r : rows) nnz += static_cast<Offset>(r.size());
-  t.cols = View1<Index>("polymech::helmholtz::transfer_cols", nnz);
-  t.weights = View1<T>("polymech::helmholtz::transfer_weights", nnz);
-  auto hr = Kokkos::create_mirror_view(t.row_ptr);
-  auto hc = Kokkos::create_mirror_view(t.cols);
-  auto hw = Kokkos::create_mirror_view(t.weights);
+  P.cols = View1<Index>("polymech::helmholtz::transfer_cols", nnz);
+  P.values = View1<T>("polymech::helmholtz::transfer_weights", nnz);
+  auto hr = Kokkos::create_mirror_view(P.row_ptr);
+  auto hc = Kokkos::create_mirror_view(P.cols);
+  auto hw = Kokkos::create_mirror_view(P.values);
   Offset at = 0;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     hr(r) = at;
@@ -108,9 +109,9 @@ fem::Transfer<T> prolongation(const HexDofs& fine, const std::vector<char>& fine
     }
   }
   hr(rows.size()) = at;
-  Kokkos::deep_copy(t.row_ptr, hr);
-  Kokkos::deep_copy(t.cols, hc);
-  Kokkos::deep_copy(t.weights, hw);
+  Kokkos::deep_copy(P.row_ptr, hr);
+  Kokkos::deep_copy(P.cols, hc);
+  Kokkos::deep_copy(P.values, hw);
   return t;
 }
 
