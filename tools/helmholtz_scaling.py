@@ -10,7 +10,8 @@ time from the measured one-rank costs and the partition of that run:
   T_n = iterations_n x (max_r elements_r x t_element + max_r local_dofs_r x t_vector
                         + t_exchange(max_r halo bytes_r) + 2 t_allreduce),
 with t_element, t_vector from the one-rank run (apply time per element, rest of an iteration per
-DoF), and t_exchange(b) = alpha + b / beta, t_allreduce fitted to the two-rank runs.
+DoF), t_exchange(b) = alpha + b / beta and t_allreduce from bench/mpi_probe (DIR/probe.txt, medians:
+MPI on this machine when both ranks run) or, without it, fitted to the two-rank runs.
 """
 import glob
 import json
@@ -57,7 +58,16 @@ def main(folder):
             fit.append((bytes_per_dof * max(st["send"], st["ghost"]), st["halo_s"]))
     # t_exchange(b) = alpha + b / beta, least squares over the two-rank runs
     alpha, inv_beta = 0.0, 0.0
-    if len(fit) >= 2:
+    probe = os.path.join(folder, "probe.txt")
+    probed = {}
+    if os.path.exists(probe):
+        for line in open(probe):
+            kv = dict(item.split("=", 1) for item in line.split()[2:])
+            probed[line.split()[1] + kv.get("bytes", "")] = float(kv["median_seconds"])
+    if "exchange1024" in probed and "exchange262144" in probed:
+        inv_beta = (probed["exchange262144"] - probed["exchange1024"]) / (262144 - 1024)
+        alpha = max(0.0, probed["exchange1024"] - 1024 * inv_beta)
+    elif len(fit) >= 2:
         mb = statistics.mean(b for b, _ in fit)
         mt = statistics.mean(t for _, t in fit)
         var = sum((b - mb) ** 2 for b, _ in fit)
@@ -79,9 +89,10 @@ def main(folder):
         if 2 in rr and case in base:
             no_red = model(case, rr[2], 0.0)
             red.append(max(0.0, (rr[2]["solve_seconds"] - no_red) / (rr[2]["iterations"] + 3) / 2))
-    t_red = statistics.median(red) if red else 0.0
-    print("Model constants: exchange alpha = %.1f us, 1/beta = %.3f ns/byte (%.2f GB/s), allreduce %.1f us"
-          % (alpha * 1e6, inv_beta * 1e9, 1e-9 / inv_beta if inv_beta > 0 else float("inf"), t_red * 1e6))
+    t_red = probed.get("allreduce", statistics.median(red) if red else 0.0)
+    print("Model constants (%s): exchange alpha = %.2f us, 1/beta = %.3f ns/byte (%.1f GB/s), allreduce %.2f us"
+          % ("bench/mpi_probe" if probed else "fitted to the two-rank runs", alpha * 1e6, inv_beta * 1e9,
+             1e-9 / inv_beta if inv_beta > 0 else float("inf"), t_red * 1e6))
     print()
     print("| case | nodes (DoFs) | ranks | iterations | L2 error | solve measured | S_n measured | E_n measured "
           "| solve model | S_n model | E_n model | ghost DoFs / part (max) | sent DoFs / part (max) |")
