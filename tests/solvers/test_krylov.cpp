@@ -207,6 +207,24 @@ TEST(Krylov, ZeroRightHandSideGivesZero) {
 
 namespace {
 
+// z = d .* r (CUDA: the kernel in a free function, not in a member of a local class).
+void scale_kernel(const pm::View1<C>& d, const pm::View1<C>& r, const pm::View1<C>& z) {
+  Kokkos::parallel_for(
+      "test::scale", pm::range(static_cast<pm::Index>(r.extent(0))), KOKKOS_LAMBDA(const pm::Index i) { z(i) = d(i) * r(i); });
+}
+
+// z = inv .* r, as a general preconditioner.
+struct Scale {
+  pm::View1<C> inv;
+  void apply(const pm::View1<C>& r, const pm::View1<C>& z) const { scale_kernel(inv, r, z); }
+};
+
+// e = x - z.
+void difference(const pm::View1<double>& x, const pm::View1<double>& z, const pm::View1<double>& e) {
+  Kokkos::parallel_for(
+      "test::error", pm::range(static_cast<pm::Index>(x.extent(0))), KOKKOS_LAMBDA(const pm::Index i) { e(i) = x(i) - z(i); });
+}
+
 // A tridiagonal operator that reports its global sums (as a distributed operator would).
 template <class V>
 struct CountingTridiagonal : Tridiagonal<V> {
@@ -224,14 +242,6 @@ TEST(Krylov, FusedJacobiMatchesAGeneralPreconditionerDoingTheSame) {
   pm::View1<C> b("b", n), x1("x1", n), x2("x2", n), inv("inv", n);
   Kokkos::deep_copy(b, C(1.0, -0.5));
   Kokkos::deep_copy(inv, C(1.0, 0.0) / C(2.5, 0.2));
-  struct Scale {  // z = inv .* r, as a general preconditioner
-    pm::View1<C> inv;
-    void apply(const pm::View1<C>& r, const pm::View1<C>& z) const {
-      const auto d = inv;
-      Kokkos::parallel_for("test::scale", pm::range(static_cast<pm::Index>(r.extent(0))),
-                           KOKKOS_LAMBDA(const pm::Index i) { z(i) = d(i) * r(i); });
-    }
-  };
   const auto r1 = sv::cocg(A, inv, b, x1);
   const auto r2 = sv::cocg_preconditioned(A, Scale{inv}, b, x2);
   ASSERT_TRUE(r1.converged()) << r1.reason;
@@ -265,7 +275,7 @@ TEST(Krylov, SpectrumEstimateAndChebyshevBound) {
   for (int degree : {10, 100, 300}) {
     const sv::Chebyshev<Tridiagonal<double>, double> P(&A, inv, 2 * lo, 2 * hi, degree);  // D^-1 A = A / 2
     P.apply(b, z);
-    Kokkos::parallel_for("test::error", pm::range(n), KOKKOS_LAMBDA(const pm::Index i) { e(i) = x(i) - z(i); });
+    difference(x, z, e);
     A.apply(e, Ae);
     const double err = std::sqrt(sv::dot_with_norms("test", n, e, Ae).dot), ref = std::sqrt(sv::dot_with_norms("test", n, x, b).dot);
     const double sk = std::sqrt(hi / lo), bound = 2 * std::pow((sk - 1) / (sk + 1), degree);
