@@ -1,10 +1,10 @@
 // Device data of a mesh of order-p Lagrange hexahedra and the geometry kernel (isoparametric map,
 // seed 002 paper 3 eq. (21) taken to order p).
 //
-// Layout (ready for a later domain decomposition): DoFs are local indices of one part, owned DoFs
-// first [0, owned) and ghost copies of neighbours' DoFs after them [owned, owned + ghost). Element
-// kernels gather and scatter local indices; reductions run over owned entries (kernels/solvers). With
-// one part there are no ghosts.
+// Layout (domain decomposition, models/helmholtz/distribute.hpp): DoFs are local indices of one part,
+// owned DoFs first [0, owned) and ghost copies of neighbours' DoFs after them [owned, owned + ghost).
+// Element kernels gather and scatter local indices; reductions run over owned entries
+// (kernels/solvers). With one part there are no ghosts.
 //
 // Element-to-DoF map: dofs(e, a) for the N^3 nodes a = i + N (j + N k) of element e (GLL node i along
 // xi, j along eta, k along zeta). A DoF under a strong Dirichlet condition is stored as -1 - d, so the
@@ -13,8 +13,8 @@
 // Elements are stored in chunks (runs of neighbouring elements), the chunks grouped by colour: chunks
 // of one colour share no DoF, so each colour is one parallel launch over its chunks that scatter-adds
 // without atomics, and results do not depend on the thread count. A thread works through a chunk's
-// elements in order, which keeps the DoFs they share in cache (on the host a chunk is ~8000 nodes; on
-// a GPU, one element).
+// elements in order, in batches of `batch` elements (the SIMD lanes of the volume kernel), which keeps
+// the DoFs they share in cache (on the host a chunk is ~8000 nodes; on a GPU, one element).
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // Helmholtz model (seed 002 paper 3): order-p hexahedral Lagrange elements on a linear hexahedral mesh,
 // the complex symmetric system (A - k^2 M + j rho omega C) Phi = q of eq. (16) applied matrix-free, and
-// COCG with Jacobi preconditioning.
+// COCG with Jacobi (or shifted-Laplacian: preconditioners.hpp) preconditioning; one part of an MPI domain
+// decomposition when Config::communicator has several ranks (distribute.hpp, parallel.hpp).
 //
 //   polymech::helmholtz::Config cfg;   // or io::load_helmholtz_scene(...)
 //   Helmholtz<double> model(cfg);
