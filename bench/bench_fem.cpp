@@ -81,6 +81,55 @@ BENCHMARK_TEMPLATE(BM_MatrixFreeApply, float)
     ->Args({1, 100})->Args({2, 50})->Args({3, 33})->Args({4, 25})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Steps of the batched volume kernel (double, about 1e6 DoFs, p = 2..4), to see what each one gains:
+//   BM_ApplyStep<E, EvenOdd, Affine, Prefetch, Stage>/p/n: y = 0, then the volume kernel y += (A + m M) x
+//   with E elements per batch (1: one element at a time, as before batching), the even-odd 1D kernels
+//   or the full matrices, one Jacobian per affine element or factors at every point, the software
+//   prefetch of the next batch's DoFs, and the stage (0 gather + scatter, 1 + B / B^T, 2 + Dq / Dq^T,
+//   3 the whole kernel). <2, 1, 1, 1, 3> is the production kernel (fem::volume_batch<double>() = 2 on AVX2).
+template <int E, bool EvenOdd, bool Affine, bool Prefetch, int Stage, bool Kronecker>
+void BM_ApplyStep(benchmark::State& state) {
+  hz::Config c = cube(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  c.batch_elements = E;
+  c.affine_geometry = Affine;
+  if (state.range(2) > 0) c.chunk_elements = static_cast<int>(state.range(2));
+  hz::Helmholtz<double> m(c);
+  const auto x = ramp<double>(m.dof_count());
+  pm::View1<Kokkos::complex<double>> y("y", m.dof_count());
+  const auto& el = m.op().elements();
+  state.counters["colors"] = el.colors();
+  auto apply = [&] {
+    Kokkos::deep_copy(y, Kokkos::complex<double>(0));
+    auto run = [&](auto n) {
+      pm::fem::detail::apply_volume<Kokkos::complex<double>, double, decltype(n)::value, E, true, EvenOdd,
+                                    static_cast<pm::fem::detail::VolumeStage>(Stage), Prefetch, Kronecker>(
+          "bench::apply_step", el, m.op().mass_coefficient(), x, y);
+    };
+    switch (c.order) {
+      case 2: run(std::integral_constant<int, 3>{}); break;
+      case 3: run(std::integral_constant<int, 4>{}); break;
+      case 4: run(std::integral_constant<int, 5>{}); break;
+      default: state.SkipWithError("orders 2..4 only");
+    }
+    Kokkos::fence();
+  };
+  apply();
+  for (auto _ : state) apply();
+  set_counters(state, m, traffic(m), static_cast<double>(state.iterations()));
+}
+#define POLYMECH_STEP_SIZES ->Args({2, 50, 0})->Args({3, 33, 0})->Args({4, 25, 0})->Args({3, 33, 1 << 30})->Unit(benchmark::kMillisecond)->UseRealTime()
+BENCHMARK_TEMPLATE(BM_ApplyStep, 1, false, false, false, 3, false) POLYMECH_STEP_SIZES;  // one element at a time
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, false, false, false, 3, false) POLYMECH_STEP_SIZES;  // + batches of 2 (one AVX2 register)
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, false, false, 3, false) POLYMECH_STEP_SIZES;   // + even-odd 1D kernels
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, false, 3, false) POLYMECH_STEP_SIZES;    // + one Jacobian per affine element
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, true, 3, false) POLYMECH_STEP_SIZES;     // + prefetch of the next batch
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, true, 3, true) POLYMECH_STEP_SIZES;      // + Kronecker form: production
+BENCHMARK_TEMPLATE(BM_ApplyStep, 4, true, true, true, 3, true) POLYMECH_STEP_SIZES;      // batches of 4 (two registers)
+BENCHMARK_TEMPLATE(BM_ApplyStep, 1, true, true, true, 3, true) POLYMECH_STEP_SIZES;      // batches of 1 (complex in one register)
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, true, 0, true) POLYMECH_STEP_SIZES;      // stages of the quadrature path
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, true, 1, true) POLYMECH_STEP_SIZES;
+BENCHMARK_TEMPLATE(BM_ApplyStep, 2, true, true, true, 2, true) POLYMECH_STEP_SIZES;
+
 // The assembled matrix of the same operator (Dirichlet rows included), in CSR on the device.
 struct Assembled {
   std::unique_ptr<hz::Helmholtz<double>> model;

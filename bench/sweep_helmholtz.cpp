@@ -4,11 +4,15 @@
 //
 //   sweep_helmholtz [--cases cube,duct,duct_2khz] [--orders 1,2,3,4] [--precision double,float]
 //                   [--max-dofs 8e5] [--float-tolerance 1e-6] [--out out/accuracy_cost] [--threads N]
+//                   [--preconditioners jacobi,pmg,...] [--elements-x 16,80]
 //
 // Double runs use the paper's tolerance 1e-10 (Table 1). Float cannot reach it (its attainable
 // relative residual is 1e-7 .. 1e-4 here); float runs use --float-tolerance, and where even that is
 // out of reach COCG stops as `stagnated` (status 5) at the precision's floor, which the CSV records.
 //
+// --preconditioners runs every mesh once per preconditioner (column `preconditioner`: 0 none, 1 jacobi,
+// 2 chebyshev, 3 pmg; its set-up time, included in solve_seconds, in `preconditioner_seconds`);
+// --elements-x keeps only the meshes with these element counts along x.
 // Writes <out>/helmholtz_<case>.csv (rewritten after every run, so a long sweep can be watched);
 // tools/plot_helmholtz_accuracy_cost.py draws the Pareto plots and the "cheapest order" table.
 // Cases: cube = scenes/helmholtz/cube.toml (500 Hz), duct = scenes/helmholtz/duct.toml (500 Hz),
@@ -49,7 +53,7 @@ const std::vector<Case>& cases() {
 
 struct Row {
   double is_float, order, elements_x, h, dofs, status, iterations, restarts, true_residual, l2_error, setup, solve,
-      wall, cpu, frequency, nodes_per_wavelength;
+      wall, cpu, frequency, nodes_per_wavelength, preconditioner, preconditioner_seconds;
 };
 
 template <class T>
@@ -79,7 +83,9 @@ Row run_one(const pm::io::HelmholtzScene& scene) {
           wall,
           cpu,
           c.frequency,
-          2.0 * M_PI / c.wavenumber() / h * c.order};
+          2.0 * M_PI / c.wavenumber() / h * c.order,
+          double(static_cast<int>(c.preconditioner)),
+          m.preconditioner_seconds()};
 }
 
 }  // namespace
@@ -87,7 +93,8 @@ Row run_one(const pm::io::HelmholtzScene& scene) {
 int main(int argc, char** argv) {
   CLI::App app{"Accuracy-cost sweep of the Helmholtz model (seed 002 paper 3)"};
   std::vector<std::string> wanted = {"cube", "duct", "duct_2khz"}, precisions = {"double", "float"};
-  std::vector<int> orders = {1, 2, 3, 4};
+  std::vector<int> orders = {1, 2, 3, 4}, elements_x;
+  std::vector<std::string> preconditioners = {"jacobi"};
   std::string out = "out/accuracy_cost";
   double max_dofs = 8e5, float_tolerance = 1e-6;
   int threads = -1;
@@ -101,6 +108,11 @@ int main(int argc, char** argv) {
   app.add_option("--float-tolerance", float_tolerance, "COCG tolerance of the float runs")->capture_default_str();
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_option("--threads", threads, "OpenMP threads");
+  app.add_option("--preconditioners", preconditioners, "COCG preconditioners: none, jacobi, chebyshev, pmg")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"none", "jacobi", "chebyshev", "pmg"}))
+      ->capture_default_str();
+  app.add_option("--elements-x", elements_x, "only the meshes with these element counts along x")->delimiter(',');
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("sweep_helmholtz", [&] {
     pm::apps::KokkosSession kokkos(threads);
@@ -115,12 +127,12 @@ int main(int argc, char** argv) {
         const std::vector<std::string> header = {
             "is_float", "order", "elements_x", "h", "dofs", "status", "iterations", "restarts", "true_residual",
             "l2_error", "setup_seconds", "solve_seconds", "wall_seconds", "cpu_seconds", "frequency",
-            "nodes_per_wavelength"};
+            "nodes_per_wavelength", "preconditioner", "preconditioner_seconds"};
         std::vector<std::vector<double>> cols(header.size());
         for (const auto& r : rows) {
           const double v[] = {r.is_float, r.order, r.elements_x, r.h, r.dofs, r.status, r.iterations, r.restarts,
                               r.true_residual, r.l2_error, r.setup, r.solve, r.wall, r.cpu, r.frequency,
-                              r.nodes_per_wavelength};
+                              r.nodes_per_wavelength, r.preconditioner, r.preconditioner_seconds};
           for (std::size_t k = 0; k < header.size(); ++k) cols[k].push_back(v[k]);
         }
         pm::io::write_csv(std::filesystem::path(out) / ("helmholtz_" + cs.name + ".csv"), header, cols);
@@ -128,21 +140,30 @@ int main(int argc, char** argv) {
       for (const auto& prec : precisions)
         for (const int p : orders) {
           for (int nx : cs.elements.at(p)) {
+            if (!elements_x.empty() && std::find(elements_x.begin(), elements_x.end(), nx) == elements_x.end()) continue;
             const std::array<int, 3> n = {nx, std::max(1, nx / cs.aspect[1]), std::max(1, nx / cs.aspect[2])};
             const double dofs = double(p * n[0] + 1) * (p * n[1] + 1) * (p * n[2] + 1);
             if (dofs > max_dofs) continue;
-            pm::io::HelmholtzSceneOptions o;
-            o.order = p;
-            o.precision = prec;
-            o.elements = n;
-            auto scene = pm::io::load_helmholtz_scene(cs.scene, o);
-            if (prec == "float") scene.config.solver.tolerance = float_tolerance;
-            rows.push_back(prec == "float" ? run_one<float>(scene) : run_one<double>(scene));
-            const Row& r = rows.back();
-            std::fprintf(stderr, "[sweep] %s %s p = %d, %d x %d x %d elements, %.0f DoFs: error %.3e, %d its (%s), %.2f s\n",
-                         cs.name.c_str(), prec.c_str(), p, n[0], n[1], n[2], r.dofs, r.l2_error, int(r.iterations),
-                         pm::solvers::to_string(static_cast<pm::solvers::SolveStatus>(int(r.status))), r.wall);
-            write();
+            for (const auto& pc : preconditioners) {
+              pm::io::HelmholtzSceneOptions o;
+              o.order = p;
+              o.precision = prec;
+              o.elements = n;
+              auto scene = pm::io::load_helmholtz_scene(cs.scene, o);
+              if (prec == "float") scene.config.solver.tolerance = float_tolerance;
+              scene.config.preconditioner = pc == "none"        ? hz::Preconditioner::none
+                                            : pc == "chebyshev" ? hz::Preconditioner::chebyshev
+                                            : pc == "pmg"       ? hz::Preconditioner::pmg
+                                                                : hz::Preconditioner::jacobi;
+              rows.push_back(prec == "float" ? run_one<float>(scene) : run_one<double>(scene));
+              const Row& r = rows.back();
+              std::fprintf(stderr,
+                           "[sweep] %s %s p = %d, %d x %d x %d elements, %.0f DoFs, %s: error %.3e, %d its (%s), %.2f s\n",
+                           cs.name.c_str(), prec.c_str(), p, n[0], n[1], n[2], r.dofs, pc.c_str(), r.l2_error,
+                           int(r.iterations), pm::solvers::to_string(static_cast<pm::solvers::SolveStatus>(int(r.status))),
+                           r.wall);
+              write();
+            }
           }
         }
       std::printf("accuracy-cost table: %s/helmholtz_%s.csv\n", out.c_str(), cs.name.c_str());

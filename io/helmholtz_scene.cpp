@@ -186,7 +186,15 @@ HelmholtzScene load_helmholtz_scene(const std::filesystem::path& file, const Hel
   // [solver]
   if (auto s = root.optional_table("solver")) {
     s->choice("method", {"cocg"}, "cocg");
-    c.jacobi = s->choice("preconditioner", {"jacobi", "none"}, "jacobi") == "jacobi";
+    const std::string pc = s->choice("preconditioner", {"jacobi", "none", "chebyshev", "pmg"}, "jacobi");
+    c.preconditioner = pc == "none"        ? hz::Preconditioner::none
+                       : pc == "chebyshev" ? hz::Preconditioner::chebyshev
+                       : pc == "pmg"       ? hz::Preconditioner::pmg
+                                           : hz::Preconditioner::jacobi;
+    // shifted Laplacian S = A + shift k^2 M of the chebyshev / pmg preconditioners
+    c.shifted.shift = s->real("shift", c.shifted.shift, Range{0.0, 100.0, true, true});
+    c.shifted.smoothing_degree = static_cast<int>(s->integer("smoothing_degree", c.shifted.smoothing_degree, 1, 50));
+    c.shifted.polynomial_degree = static_cast<int>(s->integer("polynomial_degree", c.shifted.polynomial_degree, 0, 1000));
     c.solver.tolerance = s->real("tolerance", 1e-10, Range{0.0, 1.0, true, true});
     c.solver.max_iterations = static_cast<int>(s->integer("max_iterations", 10000, 1, 10000000));
     c.solver.stagnation_window = static_cast<int>(s->integer("stagnation_window", 1000, 1, 10000000));

@@ -1,6 +1,9 @@
 // Seed 002 paper 3: the 3D Helmholtz equation with order-p hexahedral elements, matrix-free, by COCG.
 //   helmholtz [--scene scenes/helmholtz/cube.toml] [--out out/helmholtz_cube] [--order 1..4]
 //             [--accuracy draft|standard|paper] [--precision double|float] [--frequency Hz] [--threads N]
+//             [--partition automatic|structured|metis]
+// MPI build (preset mpi): `mpirun -np R helmholtz ...` splits the mesh into R parts (threads per rank:
+// --threads); rank 0 gathers the solution and writes every file.
 // Writes to --out: summary.json (order, h, dofs, l2_error, iterations, solve_seconds, ...),
 // convergence.csv (relative residual per COCG iteration), field.h5 + field.xdmf (Phi, pressure and,
 // with an analytic case, the exact fields and the error, on order-p elements split into linear
@@ -13,6 +16,9 @@
 #include "apps/common/app.hpp"
 #include "helmholtz/helmholtz.hpp"
 #include "io/helmholtz_scene.hpp"
+#if POLYMECH_WITH_MPI
+#include "helmholtz/mpi_communicator.hpp"
+#endif
 
 namespace pm = polymech;
 namespace hz = polymech::helmholtz;
@@ -39,14 +45,17 @@ class IterationLog {
 };
 
 template <class T>
-int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions& opt) {
+int run_case(const pm::io::HelmholtzScene& scene, pm::apps::CommonOptions opt) {
   const hz::Config& c = scene.config;
-  pm::io::make_output_dir(opt.out);
   hz::Helmholtz<T> model(c);
+  const bool root = model.rank() == 0;
+  if (!root) opt.quiet = true;
+  if (root) pm::io::make_output_dir(opt.out);
   const double h = model.mean_element_size();
   const double k = c.wavenumber();
   const double ppw = 2.0 * M_PI / k / h * c.order;  // nodes per wavelength
-  std::fprintf(stderr,
+  if (root)
+    std::fprintf(stderr,
                "[helmholtz] %s\n  mesh %s (%lld elements, %d colours), order %d, %d DoFs, %s precision, %d threads\n"
                "  f = %g Hz, k = %.4g 1/m, h = %.4g m, k h = %.3g (%.1f nodes per wavelength); effects: %s\n"
                "  set-up %.2f s\n",
@@ -61,12 +70,23 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
                }(),
                model.setup_seconds());
 
+  // Operator throughput of this run (DoFs per second of one y = K x, wall time, all threads of the run)
+  const double apply_rate = model.apply_rate(5);
   IterationLog log(!opt.quiet);
   pm::solvers::SolverOptions so = c.solver;
   so.monitor = [&](int it, double rel) { log.update(it, rel); };
   const auto result = model.solve(so);
   const bool analytic = c.analytic.kind != hz::AnalyticKind::none;
   const pm::fem::ErrorIntegrals err = analytic ? model.l2_error() : pm::fem::ErrorIntegrals{};
+  // the parts: owned and ghost DoFs, halo volume and time (gathered on rank 0)
+  const auto& layout = model.part();
+  const auto* halo = model.op().halo();
+  const std::vector<double> parts = model.communicator().gather(
+      {double(layout.owned), double(layout.global_of_local.size() - layout.owned), double(model.local_element_count()),
+       double(layout.neighbours.size()), halo ? double(halo->send_entries()) : 0.0, halo ? halo->seconds() : 0.0,
+       halo ? double(halo->updates()) : 0.0});
+  const auto phi = model.host_solution();  // gathered on rank 0 (every rank takes part)
+  if (!root) return result.converged() || result.status == pm::solvers::SolveStatus::stagnated ? 0 : 1;
   std::fprintf(stderr, "[helmholtz] COCG %s after %d iterations (%d restarts): relative residual %.3e, true %.3e, %.2f s\n",
                pm::solvers::to_string(result.status), result.iterations, result.restarts, result.relative_residual,
                result.true_relative_residual, result.seconds);
@@ -77,7 +97,6 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
   pm::io::write_csv(opt.out / "convergence.csv", {"iteration", "relative_residual"}, {its, result.history});
 
   // field.h5 + field.xdmf
-  const auto phi = model.host_solution();
   const auto exact = analytic ? model.host_analytic() : std::vector<std::complex<double>>{};
   const std::complex<double> pf = model.pressure_factor();
   std::vector<std::string> files = {"summary.json", "convergence.csv"};
@@ -155,11 +174,23 @@ int run_case(const pm::io::HelmholtzScene& scene, const pm::apps::CommonOptions&
   j["relative_residual"] = result.relative_residual;
   j["true_relative_residual"] = result.true_relative_residual;
   j["tolerance"] = c.solver.tolerance;
+  j["preconditioner"] = pm::helmholtz::to_string(c.preconditioner);
+  j["preconditioner_description"] = model.preconditioner_description();
+  j["preconditioner_seconds"] = model.preconditioner_seconds();
   j["solve_seconds"] = model.solve_seconds();
+  j["apply_dofs_per_second"] = apply_rate;
   j["cocg_seconds"] = result.seconds;
   j["setup_seconds"] = model.setup_seconds();
   j["operator_bytes"] = model.op().bytes();
-  j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
+  j["ranks"] = model.ranks();
+  j["threads"] = pm::kx::concurrency<pm::ExecSpace>();  // per rank
+  j["partition"] = model.ranks() > 1 ? layout.method : std::string("none");
+  nlohmann::json pj = nlohmann::json::array();
+  for (std::size_t r = 0; r + 6 < parts.size(); r += 7)
+    pj.push_back({{"owned_dofs", parts[r]}, {"ghost_dofs", parts[r + 1]}, {"elements", parts[r + 2]},
+                  {"neighbours", parts[r + 3]}, {"halo_send_dofs", parts[r + 4]}, {"halo_seconds", parts[r + 5]},
+                  {"halo_exchanges", parts[r + 6]}});
+  j["parts"] = pj;
   j["files"] = files;
   pm::io::write_json(opt.out / "summary.json", j);
 
@@ -188,16 +219,29 @@ int main(int argc, char** argv) {
   double frequency = 0;
   app.add_option("--order", order, "element order p (default: the scene's)")->check(CLI::Range(1, 4));
   app.add_option("--frequency", frequency, "frequency [Hz] (default: the scene's)")->check(CLI::PositiveNumber);
+  std::string partition = "automatic";
+  app.add_option("--partition", partition, "how an MPI run splits the mesh")
+      ->check(CLI::IsMember({"automatic", "structured", "metis"}))
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("helmholtz", [&] {
     if (opt.steps > 0) throw std::invalid_argument("--steps does not apply to a frequency-domain solve");
+#if POLYMECH_WITH_MPI
+    hz::MpiSession mpi(argc, argv);
+#endif
     pm::apps::KokkosSession kokkos(opt.threads);
     pm::io::HelmholtzSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;
     so.order = order;
     so.frequency = frequency;
-    const auto scene = pm::io::load_helmholtz_scene(opt.scene, so);
+    auto scene = pm::io::load_helmholtz_scene(opt.scene, so);
+    scene.config.partition = partition == "metis"        ? hz::PartitionMethod::metis
+                             : partition == "structured" ? hz::PartitionMethod::structured
+                                                         : hz::PartitionMethod::automatic;
+#if POLYMECH_WITH_MPI
+    scene.config.communicator = mpi.world();
+#endif
     return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

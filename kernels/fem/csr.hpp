@@ -1,5 +1,6 @@
 // A sparse matrix in CSR form with a Kokkos matrix-vector product: the assembled counterpart of the
-// matrix-free operator (benchmarks compare their time and memory) and an operator for the solvers.
+// matrix-free operator (benchmarks compare their time and memory), an operator for the solvers, and
+// (real values on complex vectors) the order transfers of the p-multigrid.
 #pragma once
 
 #include "core/types.hpp"
@@ -21,15 +22,23 @@ struct CsrMatrix {
   // Operator concept (kernels/solvers/krylov.hpp).
   Index local_size() const { return rows(); }
   Index owned_size() const { return rows(); }
-  void apply(const View1<V>& x, const View1<V>& y) const {
+  void apply(const View1<V>& x, const View1<V>& y) const { multiply<false>("polymech::fem::csr_apply", x, y); }
+
+  // y = A x (Add = false) or y += A x, for vectors of any type X that V times X makes (real weights
+  // on complex vectors: the order transfers of the p-multigrid).
+  template <bool Add, class X>
+  void multiply(const char* label, const View1<X>& x, const View1<X>& y) const {
     const auto rp = row_ptr;
     const auto c = cols;
     const auto v = values;
     Kokkos::parallel_for(
-        "polymech::fem::csr_apply", range(rows()), KOKKOS_LAMBDA(const Index i) {
-          V s = V(0);
+        label, range(rows()), KOKKOS_LAMBDA(const Index i) {
+          X s = X(0);
           for (Offset k = rp(i); k < rp(i + 1); ++k) s += v(k) * x(c(k));
-          y(i) = s;
+          if (Add)
+            y(i) += s;
+          else
+            y(i) = s;
         });
   }
 };

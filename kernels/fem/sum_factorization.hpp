@@ -115,4 +115,100 @@ KOKKOS_FORCEINLINE_FUNCTION void integrate_2d(const Mat& B, const V* vq, V* v, V
   contract<0, Q, N, Q, N, 1, true, false>(B, tmp, v);
 }
 
+// ---- Even-odd decomposition of the 1D kernels ------------------------------------------------------
+// The 1D matrices of a symmetric rule (GLL nodes and Gauss points symmetric about 0) satisfy
+// M[NOut-1-a][NIn-1-b] = S M[a][b] with S = +1 for values (B) and S = -1 for derivatives (Dq). With
+// e_b = u_b + u_(NIn-1-b) and o_b = u_b - u_(NIn-1-b), the top half of the output is
+//   out_a = E_a + O_a,   out_(NOut-1-a) = S (E_a - O_a),   E = Me e, O = Mo o,
+// with half-size matrices Me[a][b] = (M[a][b] + M[a][NIn-1-b]) / 2 and Mo[a][b] = (M[a][b] -
+// M[a][NIn-1-b]) / 2 (and the middle column / row of an odd size kept whole): about half the
+// multiplications of the full product, the other half replaced by additions, which run on their own
+// units on current CPUs.
+template <class T, int NOut, int NIn, int S>
+struct EvenOdd {
+  static_assert(S == 1 || S == -1, "S is +1 (even matrix) or -1 (odd matrix)");
+  static constexpr int HO = NOut / 2, HI = NIn / 2, RO = (NOut + 1) / 2, RI = (NIn + 1) / 2;
+  T even[RO][RI];
+  T odd[RO][HI];
+};
+
+// The even-odd form of M ([NOut][NIn]; Transpose: M is [NIn][NOut] and its transpose is used).
+template <int NOut, int NIn, int S, bool Transpose, class T, class Mat>
+EvenOdd<T, NOut, NIn, S> make_even_odd(const Mat& M) {
+  EvenOdd<T, NOut, NIn, S> k{};
+  auto m = [&](int a, int b) { return static_cast<T>(detail::matrix_entry<Transpose>(M, a, b)); };
+  using K = EvenOdd<T, NOut, NIn, S>;
+  for (int a = 0; a < K::RO; ++a) {
+    for (int b = 0; b < K::HI; ++b) {
+      k.even[a][b] = T(0.5) * (m(a, b) + m(a, NIn - 1 - b));
+      k.odd[a][b] = T(0.5) * (m(a, b) - m(a, NIn - 1 - b));
+    }
+    if (NIn % 2 == 1) k.even[a][K::HI] = m(a, K::HI);
+  }
+  return k;
+}
+
+namespace detail {
+
+// One line: NIn inputs at stride SI -> NOut outputs at stride SO.
+template <int SI, int SO, bool Add, class T, int NOut, int NIn, int S, class V>
+KOKKOS_FORCEINLINE_FUNCTION void even_odd_line(const EvenOdd<T, NOut, NIn, S>& k, const V* in, V* out) {
+  using K = EvenOdd<T, NOut, NIn, S>;
+  V e[K::RI], o[K::HI];
+  for (int b = 0; b < K::HI; ++b) {
+    e[b] = in[SI * b] + in[SI * (NIn - 1 - b)];
+    o[b] = in[SI * b] - in[SI * (NIn - 1 - b)];
+  }
+  if (NIn % 2 == 1) e[K::HI] = in[SI * K::HI];
+  for (int a = 0; a < K::HO; ++a) {
+    V E = k.even[a][0] * e[0];
+    for (int b = 1; b < K::RI; ++b) E += k.even[a][b] * e[b];
+    V O = k.odd[a][0] * o[0];
+    for (int b = 1; b < K::HI; ++b) O += k.odd[a][b] * o[b];
+    const V top = E + O, bottom = S > 0 ? E - O : O - E;
+    if (Add) {
+      out[SO * a] += top;
+      out[SO * (NOut - 1 - a)] += bottom;
+    } else {
+      out[SO * a] = top;
+      out[SO * (NOut - 1 - a)] = bottom;
+    }
+  }
+  if (NOut % 2 == 1) {  // middle row: only the even (S = +1) or the odd (S = -1) part is non-zero
+    V m;
+    if (S > 0) {
+      m = k.even[K::HO][0] * e[0];
+      for (int b = 1; b < K::RI; ++b) m += k.even[K::HO][b] * e[b];
+    } else {
+      m = k.odd[K::HO][0] * o[0];
+      for (int b = 1; b < K::HI; ++b) m += k.odd[K::HO][b] * o[b];
+    }
+    if (Add)
+      out[SO * K::HO] += m;
+    else
+      out[SO * K::HO] = m;
+  }
+}
+
+}  // namespace detail
+
+// As contract(): out = M in along dimension Dir of a 3D array with extents (E0, E1, E2), E_Dir = NIn,
+// by the even-odd form of M.
+template <int Dir, int E0, int E1, int E2, bool Add, class T, int NOut, int NIn, int S, class V>
+KOKKOS_FORCEINLINE_FUNCTION void contract_even_odd(const EvenOdd<T, NOut, NIn, S>& k, const V* in, V* out) {
+  static_assert(Dir >= 0 && Dir <= 2, "Dir is 0 (x), 1 (y) or 2 (z)");
+  if constexpr (Dir == 0) {
+    static_assert(E0 == NIn, "extent along x must be NIn");
+    for (int jk = 0; jk < E1 * E2; ++jk) detail::even_odd_line<1, 1, Add>(k, in + NIn * jk, out + NOut * jk);
+  } else if constexpr (Dir == 1) {
+    static_assert(E1 == NIn, "extent along y must be NIn");
+    for (int kk = 0; kk < E2; ++kk)
+      for (int i = 0; i < E0; ++i)
+        detail::even_odd_line<E0, E0, Add>(k, in + i + E0 * NIn * kk, out + i + E0 * NOut * kk);
+  } else {
+    static_assert(E2 == NIn, "extent along z must be NIn");
+    for (int ij = 0; ij < E0 * E1; ++ij) detail::even_odd_line<E0 * E1, E0 * E1, Add>(k, in + ij, out + ij);
+  }
+}
+
 }  // namespace polymech::fem

@@ -4,13 +4,18 @@
 //    the unconjugated bilinear form x^T y in place of x^H y;
 //  - cg: the same iteration for real symmetric positive definite operators, which must then keep
 //    r^T z > 0 and p^T A p > 0.
-// Both take a Jacobi preconditioner as the inverse diagonal (empty View: none).
+// Both take a Jacobi preconditioner as the inverse diagonal (empty View: none), whose update is fused
+// into the vector kernels (x, r and r^T z in one pass, z never stored), or any linear preconditioner
+// (cocg_preconditioned / cg_preconditioned), which must be symmetric (P^T = P) for the method to hold:
+//   void apply(const View1<V>& r, const View1<V>& z) const;   // z = P r
 //
 // Operator concept (the matrix-free operator of kernels/fem, a CSR matrix, a test operator):
 //   using value_type = V;                        // T or Kokkos::complex<T>
 //   Index local_size() const;                    // owned + ghost entries of a vector
 //   Index owned_size() const;                    // owned entries, reduced over
 //   void apply(const View1<V>& x, const View1<V>& y) const;   // y = A x
+//   void reduce_sum(double* values, int count) const;          // optional: sums over the parts of a
+//                                                              // distributed operator (MPI_Allreduce)
 //
 // Guards: relative breakdown checks on r^T z and p^T A p, NaN/Inf, stagnation (no 10 % reduction
 // of the best residual over `stagnation_window` iterations), and the true residual |b - A x| / |b|
@@ -28,6 +33,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "solvers/vector_ops.hpp"
@@ -72,6 +79,42 @@ struct SolveResult {
 
 namespace detail {
 
+// Global sums of a distributed operator: A.reduce_sum when it has one, nothing otherwise.
+template <class Op, class = void>
+struct has_reduce_sum : std::false_type {};
+template <class Op>
+struct has_reduce_sum<Op, std::void_t<decltype(std::declval<const Op&>().reduce_sum(std::declval<double*>(), 0))>>
+    : std::true_type {};
+
+template <class Op>
+double global_sum(const Op& A, double v) {
+  if constexpr (has_reduce_sum<Op>::value) A.reduce_sum(&v, 1);
+  return v;
+}
+template <class Op, class V>
+DotNorms<V> global_sum(const Op& A, DotNorms<V> d) {
+  if constexpr (has_reduce_sum<Op>::value) {
+    using S = ScalarTraits<V>;
+    using T = real_of<V>;
+    double v[4] = {static_cast<double>(S::re(d.dot)), static_cast<double>(S::im(d.dot)), d.norm2_x, d.norm2_y};
+    A.reduce_sum(v, 4);
+    d.dot = S::make(static_cast<T>(v[0]), static_cast<T>(v[1]));
+    d.norm2_x = v[2];
+    d.norm2_y = v[3];
+  }
+  return d;
+}
+
+// Jacobi (or no) preconditioning, given as the inverse diagonal: the fused vector kernels.
+template <class V>
+struct JacobiPreconditioner {
+  View1<V> inv_diag;  // empty: none
+};
+template <class P>
+struct is_jacobi : std::false_type {};
+template <class V>
+struct is_jacobi<JacobiPreconditioner<V>> : std::true_type {};
+
 inline std::string fmt(double x) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", x);
@@ -90,8 +133,8 @@ double magnitude(const V& v) {  // in double: |v|^2 of a small float scalar woul
   return std::hypot(static_cast<double>(S::re(v)), static_cast<double>(S::im(v)));
 }
 
-template <class Op, class V>
-SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const View1<V>& b_in, const View1<V>& x,
+template <class Op, class Prec, class V>
+SolveResult conjugate_gradients(const Op& A, const Prec& P, const View1<V>& b_in, const View1<V>& x,
                                 const SolverOptions& o, bool require_spd) {
   using T = real_of<V>;
   using S = ScalarTraits<V>;
@@ -102,7 +145,7 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
   const std::string method = require_spd ? "CG" : "COCG";
   SolveResult res;
 
-  const double bnorm = std::sqrt(norm2("polymech::solvers::rhs_norm", owned, b_in));
+  const double bnorm = std::sqrt(global_sum(A, norm2("polymech::solvers::rhs_norm", owned, b_in)));
   if (!std::isfinite(bnorm)) {
     res.status = SolveStatus::non_finite;
     res.reason = method + ": the right-hand side holds NaN or Inf";
@@ -122,8 +165,22 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
   scale(local, T(1.0 / bnorm), x, x);
   auto true_residual = [&] {  // r = b - A x; returns |r| / |b|
     A.apply(x, r);
-    return std::sqrt(residual_from_product(owned, local, b, r));
+    return std::sqrt(global_sum(A, residual_from_product(owned, local, b, r)));
   };
+  // Jacobi: z = inv_diag .* r is formed inside the fused kernels; otherwise z = P r.
+  constexpr bool jacobi = is_jacobi<Prec>::value;
+  auto precondition = [&] {
+    if constexpr (jacobi)
+      return global_sum(A, precondition_and_dot(owned, local, P.inv_diag, r, z));
+    else {
+      P.apply(r, z);
+      return global_sum(A, dot_with_norms("polymech::solvers::rz", owned, r, z));
+    }
+  };
+  const bool fused = jacobi && [&] {
+    if constexpr (jacobi) return P.inv_diag.extent(0) > 0;
+    return false;
+  }();
   bool true_known = false;
   auto finish = [&](SolveStatus st, std::string why) {
     res.status = st;
@@ -139,7 +196,7 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
   res.history.push_back(rel);
   double last_true = rel;
   while (true) {  // one pass per (re)start from the true residual in r
-    DotNorms<V> rz = precondition_and_dot(owned, local, inv_diag, r, z);
+    DotNorms<V> rz = precondition();
     Kokkos::deep_copy(p, z);
     V rho = rz.dot;
     double best = rel;
@@ -162,7 +219,7 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
                                                               " <= 0: the preconditioner is not positive definite");
 
       A.apply(p, q);
-      const DotNorms<V> pq = dot_with_norms("polymech::solvers::pAp", owned, p, q);
+      const DotNorms<V> pq = global_sum(A, dot_with_norms("polymech::solvers::pAp", owned, p, q));
       const V mu = pq.dot;
       if (!finite(mu)) return finish(SolveStatus::non_finite, method + ": p^T A p is NaN/Inf");
       if (detail::magnitude(mu) <= eps_bd * std::sqrt(pq.norm2_x * pq.norm2_y))
@@ -174,7 +231,17 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
         return finish(SolveStatus::not_positive_definite, "CG: p^T A p = " + fmt(static_cast<double>(S::re(mu))) +
                                                               " <= 0: the operator is not positive definite");
       const V alpha = rho / mu;
-      const double rr = update_solution_and_residual(owned, local, alpha, p, q, x, r);
+      double rr = 0.0;
+      if constexpr (jacobi) {
+        if (fused) {
+          rz = global_sum(A, update_and_precondition(owned, local, alpha, p, q, x, r, P.inv_diag));
+          rr = rz.norm2_x;
+        } else {
+          rr = global_sum(A, update_solution_and_residual(owned, local, alpha, p, q, x, r));
+        }
+      } else {
+        rr = global_sum(A, update_solution_and_residual(owned, local, alpha, p, q, x, r));
+      }
       ++res.iterations;
       rel = std::sqrt(rr);
       res.relative_residual = rel;
@@ -192,10 +259,17 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
                                                   fmt(best) + " in " + std::to_string(o.stagnation_window) +
                                                   " iterations (at iteration " + std::to_string(res.iterations) + ")");
       }
-      rz = precondition_and_dot(owned, local, inv_diag, r, z);
+      if (!fused) rz = precondition();
       const V beta = rz.dot / rho;
       rho = rz.dot;
-      update_direction(local, beta, z, p);
+      if constexpr (jacobi) {
+        if (fused)
+          update_direction_jacobi(local, beta, P.inv_diag, r, p);
+        else
+          update_direction(local, beta, z, p);
+      } else {
+        update_direction(local, beta, z, p);
+      }
     }
     const double tr = true_residual();  // r now holds b - A x
     res.true_relative_residual = tr;
@@ -224,7 +298,14 @@ SolveResult conjugate_gradients(const Op& A, const View1<V>& inv_diag, const Vie
 template <class Op, class V>
 SolveResult cocg(const Op& A, const View1<V>& inv_diag, const View1<V>& b, const View1<V>& x,
                  const SolverOptions& options = {}) {
-  return detail::conjugate_gradients(A, inv_diag, b, x, options, false);
+  return detail::conjugate_gradients(A, detail::JacobiPreconditioner<V>{inv_diag}, b, x, options, false);
+}
+
+// COCG with a linear, complex symmetric preconditioner P (z = P r by P.apply(r, z)).
+template <class Op, class Prec, class V>
+SolveResult cocg_preconditioned(const Op& A, const Prec& P, const View1<V>& b, const View1<V>& x,
+                                const SolverOptions& options = {}) {
+  return detail::conjugate_gradients(A, P, b, x, options, false);
 }
 
 // CG with Jacobi preconditioning for real symmetric positive definite operators.
@@ -232,7 +313,15 @@ template <class Op, class T>
 SolveResult cg(const Op& A, const View1<T>& inv_diag, const View1<T>& b, const View1<T>& x,
                const SolverOptions& options = {}) {
   static_assert(!ScalarTraits<T>::is_complex, "cg is for real SPD operators; use cocg for complex symmetric ones");
-  return detail::conjugate_gradients(A, inv_diag, b, x, options, true);
+  return detail::conjugate_gradients(A, detail::JacobiPreconditioner<T>{inv_diag}, b, x, options, true);
+}
+
+// CG with a linear, symmetric positive definite preconditioner P.
+template <class Op, class Prec, class T>
+SolveResult cg_preconditioned(const Op& A, const Prec& P, const View1<T>& b, const View1<T>& x,
+                              const SolverOptions& options = {}) {
+  static_assert(!ScalarTraits<T>::is_complex, "cg is for real SPD operators; use cocg for complex symmetric ones");
+  return detail::conjugate_gradients(A, P, b, x, options, true);
 }
 
 }  // namespace polymech::solvers

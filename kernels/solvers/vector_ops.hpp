@@ -122,6 +122,42 @@ DotNorms<V> precondition_and_dot(Index owned, Index local, const View1<V>& inv_d
   return {S::make(dr, di), static_cast<double>(nr), static_cast<double>(nz)};
 }
 
+// The fused COCG / CG update with Jacobi (inv_diag non-empty): x += alpha p; r -= alpha q; with
+// z = inv_diag .* r (not stored) returns r^T z, |r|^2 and |z|^2 (owned entries). One pass instead of
+// the update and the preconditioning pass; z is formed again in update_direction_jacobi.
+template <class V>
+DotNorms<V> update_and_precondition(Index owned, Index local, V alpha, const View1<V>& p, const View1<V>& q,
+                                    const View1<V>& x, const View1<V>& r, const View1<V>& inv_diag) {
+  using S = ScalarTraits<V>;
+  using T = real_of<V>;
+  T dr = 0, di = 0, nr = 0, nz = 0;
+  Kokkos::parallel_reduce(
+      "polymech::solvers::update_jacobi_dot", range(local),
+      KOKKOS_LAMBDA(const Index i, T& a, T& b, T& c, T& d) {
+        x(i) += alpha * p(i);
+        const V ri = r(i) - alpha * q(i);
+        r(i) = ri;
+        if (i < owned) {
+          const V zi = inv_diag(i) * ri;
+          const V rz = ri * zi;
+          a += S::re(rz);
+          b += S::im(rz);
+          c += abs2(ri);
+          d += abs2(zi);
+        }
+      },
+      dr, di, nr, nz);
+  return {S::make(dr, di), static_cast<double>(nr), static_cast<double>(nz)};
+}
+
+// p = inv_diag .* r + beta p (the Jacobi-preconditioned direction, z not stored).
+template <class V>
+void update_direction_jacobi(Index local, V beta, const View1<V>& inv_diag, const View1<V>& r, const View1<V>& p) {
+  Kokkos::parallel_for(
+      "polymech::solvers::update_p_jacobi", range(local),
+      KOKKOS_LAMBDA(const Index i) { p(i) = inv_diag(i) * r(i) + beta * p(i); });
+}
+
 // y = s x (y may be x).
 template <class V>
 void scale(Index local, real_of<V> s, const View1<V>& x, const View1<V>& y) {

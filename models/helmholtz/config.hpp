@@ -4,14 +4,18 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "effects.hpp"
 #include "helmholtz/mesh.hpp"
+#include "helmholtz/partition.hpp"
 #include "solvers/options.hpp"
 
 namespace polymech::helmholtz {
+
+class Communicator;  // helmholtz/parallel.hpp
 
 enum class BoundaryKind {
   rigid,      // dPhi/dn = 0: natural, nothing to integrate (paper §3(3): "rigid elsewhere")
@@ -50,6 +54,33 @@ struct AnalyticSpec {
   double x0 = 0.0, length = 1.0, velocity = 0.014, impedance = 445.9;
 };
 
+// Preconditioner of COCG (models/helmholtz/preconditioners.hpp).
+enum class Preconditioner {
+  none,
+  jacobi,     // inverse diagonal of K
+  chebyshev,  // Chebyshev polynomial in D^-1 S, S = A + s k^2 M (shifted Laplacian)
+  pmg,        // p-multigrid V-cycle on S with Chebyshev smoothing
+};
+
+inline const char* to_string(Preconditioner p) {
+  switch (p) {
+    case Preconditioner::none: return "none";
+    case Preconditioner::jacobi: return "jacobi";
+    case Preconditioner::chebyshev: return "chebyshev";
+    case Preconditioner::pmg: return "pmg";
+  }
+  return "?";
+}
+
+// Settings of the shifted-Laplacian preconditioners (chebyshev, pmg).
+struct ShiftedOptions {
+  double shift = 1.0;             // s of S = A + s k^2 M
+  int smoothing_degree = 3;       // pmg: Chebyshev degree of the pre- and post-smoothing
+  double smoothing_range = 15.0;  // pmg: smoothing interval [hi / range, hi] of D^-1 S
+  int polynomial_degree = 0;      // chebyshev / pmg coarse level: 0 = from the spectrum (bound 0.1)
+  int lanczos_steps = 40;         // CG steps of the spectrum estimate on the order-1 (or only) level
+};
+
 struct Config {
   int order = 1;  // p = 1..4
   HexMesh mesh;
@@ -59,10 +90,16 @@ struct Config {
   double density = 1.3;            // rho [kg/m^3]
   std::vector<BoundaryCondition> boundaries;  // boundaries not listed are rigid
   AnalyticSpec analytic;
-  bool jacobi = true;  // Jacobi preconditioning of COCG
+  Preconditioner preconditioner = Preconditioner::jacobi;
+  ShiftedOptions shifted;  // chebyshev, pmg
   int chunk_elements = 0;  // elements per chunk of the scatter colouring; 0: automatic (host ~8000 nodes, device 1)
+  int batch_elements = 0;  // elements per batch of the volume kernels (SIMD lanes); 0: one SIMD register (fem::volume_batch)
+  bool affine_geometry = true;  // affine batches keep one Jacobian per element (false: factors at every point)
   solvers::SolverOptions solver;
   EffectSet effects;
+  // Domain decomposition: one part per rank of `communicator` (null: one part, no messages).
+  std::shared_ptr<const Communicator> communicator;
+  PartitionMethod partition = PartitionMethod::automatic;
 
   double omega() const { return 2.0 * 3.14159265358979323846 * frequency; }
   double wavenumber() const { return omega() / sound_speed; }

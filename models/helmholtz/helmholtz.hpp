@@ -1,6 +1,7 @@
 // Helmholtz model (seed 002 paper 3): order-p hexahedral Lagrange elements on a linear hexahedral mesh,
 // the complex symmetric system (A - k^2 M + j rho omega C) Phi = q of eq. (16) applied matrix-free, and
-// COCG with Jacobi preconditioning.
+// COCG with Jacobi (or shifted-Laplacian: preconditioners.hpp) preconditioning; one part of an MPI domain
+// decomposition when Config::communicator has several ranks (distribute.hpp, parallel.hpp).
 //
 //   polymech::helmholtz::Config cfg;   // or io::load_helmholtz_scene(...)
 //   Helmholtz<double> model(cfg);
@@ -21,13 +22,22 @@
 #include <string>
 #include <vector>
 
+#include "common/host_copy.hpp"
 #include "fem/l2_error.hpp"
 #include "helmholtz/analytic.hpp"
 #include "helmholtz/config.hpp"
+#include "helmholtz/distribute.hpp"
 #include "helmholtz/effect_table.hpp"
 #include "helmholtz/dofs.hpp"
 #include "helmholtz/operator.hpp"
+#include "helmholtz/parallel.hpp"
 #include "solvers/krylov.hpp"
+
+namespace polymech::helmholtz {
+template <class T>
+class Helmholtz;
+}
+#include "helmholtz/preconditioners.hpp"
 
 namespace polymech::helmholtz {
 
@@ -66,21 +76,6 @@ template <class V>
 void subtract(const View1<V>& a, const View1<V>& b) {  // a -= b
   Kokkos::parallel_for(
       "polymech::helmholtz::lift_rhs", range(static_cast<Index>(a.extent(0))), KOKKOS_LAMBDA(const Index i) { a(i) -= b(i); });
-}
-
-template <class V>
-View1<V> to_device(const std::string& label, const std::vector<V>& h) {
-  View1<V> v(label, h.size());
-  auto m = Kokkos::create_mirror_view(v);
-  for (std::size_t i = 0; i < h.size(); ++i) m(i) = h[i];
-  Kokkos::deep_copy(v, m);
-  return v;
-}
-
-inline std::string format_g(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", x);
-  return b;
 }
 
 }  // namespace detail
@@ -141,8 +136,14 @@ class Helmholtz {
   const View1<C>& solution() const { return solution_; }
   const solvers::SolveResult& result() const { return result_; }
   const AnalyticField& analytic() const { return field_; }
-  Index dof_count() const { return static_cast<Index>(dofs_.count); }
-  Index element_count() const { return el_.elements(); }
+  Index dof_count() const { return static_cast<Index>(dofs_.count); }  // global
+  Index element_count() const { return static_cast<Index>(cfg_.mesh.element_count()); }  // global
+  // Domain decomposition: this rank's part.
+  int rank() const { return comm_->rank(); }
+  int ranks() const { return comm_->size(); }
+  const PartLayout& part() const { return layout_; }
+  const Communicator& communicator() const { return *comm_; }
+  Index local_element_count() const { return el_.elements(); }
   int colors() const { return el_.colors(); }
   Index constrained_count() const { return static_cast<Index>(constrained_.extent(0)); }
   Index impedance_face_count() const { return op_.impedance_faces().faces(); }
@@ -150,6 +151,12 @@ class Helmholtz {
   double min_jacobian_ratio() const { return jacobian_.min_ratio; }
   double setup_seconds() const { return setup_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
+  // Set-up of the last solve's preconditioner (chebyshev, pmg; included in solve_seconds) and what it was.
+  double preconditioner_seconds() const { return preconditioner_seconds_; }
+  const std::string& preconditioner_description() const { return preconditioner_; }
+  const View1<Index>& constrained_dofs() const { return constrained_; }
+  // DoFs per second of the operator, from `applies` timed applications (wall time) after one warm-up.
+  double apply_rate(int applies) const;
   // Typical element size h = (bounding-box volume / elements)^(1/3) (the perturbation scale).
   double mean_element_size() const {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
@@ -218,23 +225,28 @@ class Helmholtz {
   // nodes, so that a thread reuses the DoFs its chunk's elements share while they are in cache (1M DoFs,
   // one thread: p = 2 1.5x, p = 3 1.4x, p = 4 1.4x faster than one element per chunk; p = 1 the same;
   // docs/PERFORMANCE.md), but at least 64 chunks per thread so that the colours still balance.
-  static std::int64_t chunk_size(const Config& c) {
+  // A multiple of the batch size, so that only the last batch of a chunk can be partial.
+  static std::int64_t chunk_size(const Config& c, int batch) {
     if (c.chunk_elements > 0) return c.chunk_elements;
-    if (!Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible) return 1;
+    if (!Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible) return batch;
     const std::int64_t n = c.order + 1;
     const std::int64_t balance = c.mesh.element_count() / (64 * std::max(1, kx::concurrency<ExecSpace>()));
-    return std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), balance));
+    const std::int64_t size = std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), balance));
+    return (size + batch - 1) / batch * batch;
   }
 
-  std::string where(Index dof) const {
-    if (dof < 0 || dof >= dofs_.count) return "";
-    const auto* p = &dofs_.coordinates[3 * static_cast<std::size_t>(dof)];
-    return "at (" + detail::format_g(p[0]) + ", " + detail::format_g(p[1]) + ", " + detail::format_g(p[2]) + ")";
+  std::string where(Index local_dof) const {  // coordinates of a local DoF
+    if (local_dof < 0 || local_dof >= static_cast<Index>(layout_.global_of_local.size())) return "";
+    const auto* p = &dofs_.coordinates[3 * static_cast<std::size_t>(layout_.global_of_local[local_dof])];
+    return "at (" + models::format_g(p[0]) + ", " + models::format_g(p[1]) + ", " + models::format_g(p[2]) + ")";
   }
 
   Config cfg_;
   AnalyticField field_;
-  HexDofs dofs_;
+  HexDofs dofs_;  // global numbering (every rank)
+  std::shared_ptr<const Communicator> comm_;
+  PartLayout layout_;  // this rank's elements and local DoFs
+  Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace> error_dofs_;  // elements counted in eq. (28), local DoFs
   std::vector<std::int64_t> element_order_;  // storage index -> mesh element
   fem::HexElements<T> el_;
   CoordinateView x_;
@@ -245,7 +257,8 @@ class Helmholtz {
   HelmholtzOperator<T> op_;
   View1<C> solution_;
   solvers::SolveResult result_;
-  double setup_seconds_ = 0.0, solve_seconds_ = 0.0;
+  double setup_seconds_ = 0.0, solve_seconds_ = 0.0, preconditioner_seconds_ = 0.0;
+  std::string preconditioner_;
 };
 
 // Member functions that launch kernels are defined out of the class (not inline), so the explicit
@@ -262,26 +275,35 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
     const auto ext = exterior_faces(c.mesh);
     perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), c.node_perturbation, mean_element_size() / c.order);
   }
-  const Index n = static_cast<Index>(dofs_.count);
   const int N3 = dofs_.nodes_per_element();
 
-  // Dirichlet DoFs
+  // this rank's part: its elements, local DoFs (owned, then ghosts) and halo (distribute.hpp)
+  comm_ = c.communicator ? c.communicator : std::make_shared<SerialCommunicator>();
+  layout_ = make_part_layout(c.mesh, dofs_, traversal, comm_->rank(), comm_->size(), c.partition);
+  const Index n = static_cast<Index>(layout_.global_of_local.size());
+  const auto& local = layout_.local_of_global;
+
+  // Dirichlet DoFs (global mask, then local)
+  std::vector<char> constrained_global(static_cast<std::size_t>(dofs_.count), 0);
+  if (c.effects.has("dirichlet")) constrained_global = dofs_on_faces(dofs_, faces_of(BoundaryKind::dirichlet));
   std::vector<char> constrained(static_cast<std::size_t>(n), 0);
-  if (c.effects.has("dirichlet")) {
-    const auto faces = faces_of(BoundaryKind::dirichlet);
-    constrained = dofs_on_faces(dofs_, faces);
-  }
-  auto encode = [&](std::int32_t d) { return constrained[d] ? fem::constrained_dof(d) : d; };
+  for (Index i = 0; i < n; ++i) constrained[i] = constrained_global[layout_.global_of_local[i]];
+  auto encode = [&](std::int32_t global) {
+    const std::int32_t d = local[global];
+    return constrained[d] ? fem::constrained_dof(d) : d;
+  };
 
   // elements in chunks of neighbours (the locality order), the chunks grouped by colour
-  const std::int64_t ne = c.mesh.element_count();
-  const std::int64_t per_chunk = chunk_size(c);
+  const std::vector<std::int64_t>& elements = layout_.elements;
+  const std::int64_t ne = static_cast<std::int64_t>(elements.size());
+  const int batch = c.batch_elements > 0 ? c.batch_elements : fem::volume_batch<T>();
+  const std::int64_t per_chunk = chunk_size(c, batch);
   const std::int64_t nchunks = (ne + per_chunk - 1) / per_chunk;
   std::vector<std::int64_t> chunk_vertex_offsets(1, 0), chunk_vertices;
   for (std::int64_t k = 0; k < nchunks; ++k) {
     const std::size_t first = chunk_vertices.size();
     for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t)
-      for (int v = 0; v < 8; ++v) chunk_vertices.push_back(c.mesh.hexes[8 * traversal[t] + v]);
+      for (int v = 0; v < 8; ++v) chunk_vertices.push_back(c.mesh.hexes[8 * elements[t] + v]);
     std::sort(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end());
     chunk_vertices.erase(std::unique(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end()),
                          chunk_vertices.end());
@@ -294,14 +316,15 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
   std::vector<Index> chunk_start(1, 0);
   for (const std::int64_t k : chunk_order) {
     for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t)
-      element_order_.push_back(traversal[t]);
+      element_order_.push_back(elements[t]);
     chunk_start.push_back(static_cast<Index>(element_order_.size()));
   }
   el_.order = c.order;
-  el_.owned = n;
-  el_.ghost = 0;
+  el_.batch = batch;
+  el_.owned = layout_.owned;
+  el_.ghost = n - layout_.owned;
   el_.color_offsets.assign(offsets.begin(), offsets.end());
-  el_.chunk_offsets = detail::to_device<Index>("polymech::helmholtz::chunk_offsets", chunk_start);
+  el_.chunk_offsets = models::to_device<Index>("polymech::helmholtz::chunk_offsets", chunk_start);
   el_.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::element_dofs",
                                                                    element_order_.size(), N3);
   {
@@ -314,14 +337,32 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
   {
     auto h = Kokkos::create_mirror_view(x_);
     for (Index i = 0; i < n; ++i)
-      for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(i) + k];
+      for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(layout_.global_of_local[i]) + k];
     Kokkos::deep_copy(x_, h);
   }
-  jacobian_ = fem::compute_geometry(el_, x_);
+  jacobian_ = fem::compute_geometry(el_, x_, c.affine_geometry);
+  {  // the worst element over all parts (a part without the worst reports +1e300)
+    double w[2] = {-jacobian_.min_ratio, static_cast<double>(comm_->rank())};
+    comm_->max(w, 1);
+    if (-w[0] < jacobian_.min_ratio) jacobian_.element = -1;  // another part holds it
+    jacobian_.min_ratio = -w[0];
+  }
+  // the elements each part counts in integrals (eq. (28)): its own, not the overlap
+  {
+    std::vector<std::int64_t> counted;
+    for (const auto e : element_order_)
+      if (layout_.counts(e)) counted.push_back(e);
+    error_dofs_ = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::error_dofs", counted.size(), N3);
+    auto h = Kokkos::create_mirror_view(error_dofs_);
+    for (std::size_t s = 0; s < counted.size(); ++s)
+      for (int a = 0; a < N3; ++a) h(s, a) = local[dofs_.element_dofs[counted[s] * N3 + a]];
+    Kokkos::deep_copy(error_dofs_, h);
+  }
   if (!(jacobian_.min_ratio > 0.0))
     throw std::invalid_argument(
-        "helmholtz: " + c.mesh.describe_element(element_order_[jacobian_.element]) +
-        " is inverted or too distorted: det J / (volume / 8) = " + detail::format_g(jacobian_.min_ratio) +
+        "helmholtz: " +
+        (jacobian_.element >= 0 ? c.mesh.describe_element(element_order_[jacobian_.element]) : std::string("an element")) +
+        " is inverted or too distorted: det J / (volume / 8) = " + models::format_g(jacobian_.min_ratio) +
         " at a node or quadrature point of the order-" + std::to_string(c.order) +
         " map (allowed: > 0 everywhere); check the vertex order (Gmsh hexahedron numbering) and the distortion");
 
@@ -335,7 +376,7 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
     std::vector<Index> list;
     for (Index i = 0; i < n; ++i)
       if (constrained[i]) list.push_back(i);
-    constrained_ = detail::to_device<Index>("polymech::helmholtz::dirichlet_dofs", list);
+    constrained_ = models::to_device<Index>("polymech::helmholtz::dirichlet_dofs", list);
     double value = 0.0;
     for (const auto& b : c.boundaries)
       if (b.kind == BoundaryKind::dirichlet) value = b.value;
@@ -346,6 +387,8 @@ Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
   }
   const double k = c.wavenumber();
   op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
+  if (comm_->size() > 1)
+    op_.distribute(std::make_shared<Halo<C>>(comm_, layout_.neighbours, layout_.send, layout_.recv), comm_);
   solution_ = View1<C>("polymech::helmholtz::solution", n);
   Kokkos::fence();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -372,16 +415,46 @@ solvers::SolveResult Helmholtz<T>::solve(const solvers::SolverOptions& options) 
   View1<C> rhs("polymech::helmholtz::rhs", n);
   right_hand_side(rhs, solution_);
   View1<C> inv;
-  if (cfg_.jacobi) {
+  if (cfg_.preconditioner == Preconditioner::chebyshev || cfg_.preconditioner == Preconditioner::pmg) {
+    const auto tp = std::chrono::steady_clock::now();
+    if (cfg_.preconditioner == Preconditioner::chebyshev) {
+      const ChebyshevPreconditioner<T> P(*this, cfg_.shifted);
+      preconditioner_ = P.describe();
+      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
+    } else {
+      if (comm_->size() > 1)
+        throw std::invalid_argument("helmholtz: preconditioner 'pmg' runs on one part only (its transfers have no halo "
+                                    "exchange); allowed with " + std::to_string(comm_->size()) + " ranks: jacobi, "
+                                    "chebyshev, none");
+      const PMultigrid<T> P(*this, cfg_.shifted);
+      preconditioner_ = P.describe();
+      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
+      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
+    }
+    Kokkos::fence();
+    solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result_;
+  }
+  if (cfg_.preconditioner == Preconditioner::jacobi) {
     View1<C> diag("polymech::helmholtz::diagonal", n);
     op_.diagonal(diag);
     inv = View1<C>("polymech::helmholtz::inverse_diagonal", n);
-    const auto s = solvers::jacobi_inverse(op_.owned_size(), n, diag, inv);
+    auto s = solvers::jacobi_inverse(op_.owned_size(), n, diag, inv);
+    {  // over all parts
+      double v[3] = {-s.min_abs, s.max_abs, static_cast<double>(s.non_finite)};
+      comm_->max(v, 2);
+      comm_->sum(v + 2, 1);
+      if (-v[0] < s.min_abs) s.argmin = -1;
+      s.min_abs = -v[0];
+      s.max_abs = v[1];
+      s.non_finite = static_cast<Index>(v[2]);
+    }
     if (s.non_finite > 0 || !(s.min_abs > 1e-12 * s.max_abs))
       throw std::runtime_error("helmholtz: the operator diagonal " +
                                (s.non_finite > 0 ? std::string("is not finite")
-                                                 : "vanishes (|d| = " + detail::format_g(s.min_abs) + " vs max " +
-                                                       detail::format_g(s.max_abs) + ") at DoF " +
+                                                 : "vanishes (|d| = " + models::format_g(s.min_abs) + " vs max " +
+                                                       models::format_g(s.max_abs) + ") at DoF " +
                                                        std::to_string(s.argmin) + " " + where(s.argmin)) +
                                ": Jacobi preconditioning is impossible at this k h; refine the mesh or set "
                                "solver.preconditioner = \"none\"");
@@ -393,18 +466,49 @@ solvers::SolveResult Helmholtz<T>::solve(const solvers::SolverOptions& options) 
 }
 
 template <class T>
+double Helmholtz<T>::apply_rate(int applies) const {
+  const Index n = op_.local_size();
+  View1<C> x("polymech::helmholtz::rate_x", n), y("polymech::helmholtz::rate_y", n);
+  Kokkos::deep_copy(x, C(1));
+  op_.apply(x, y);
+  Kokkos::fence();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < applies; ++k) op_.apply(x, y);
+  Kokkos::fence();
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  comm_->max(&s, 1);  // the slowest part
+  return s > 0 ? static_cast<double>(dofs_.count) * applies / s : 0.0;
+}
+
+template <class T>
 fem::ErrorIntegrals Helmholtz<T>::l2_error() const {
   if (field_.kind == AnalyticKind::none) throw std::invalid_argument("helmholtz: this case has no analytic field");
+  if (op_.halo()) op_.halo()->update(solution_);  // the ghosts of the elements this part integrates
   View1<Kokkos::complex<double>> u("polymech::helmholtz::solution_double", solution_.extent(0));
   detail::to_double(solution_, u);
-  return fem::l2_error(cfg_.order, el_.dofs, x_, u, field_);
+  fem::ErrorIntegrals e = fem::l2_error(cfg_.order, error_dofs_, x_, u, field_);
+  double v[3] = {e.error2, e.reference2, e.volume};
+  comm_->sum(v, 3);
+  return {v[0], v[1], v[2]};
 }
 
 template <class T>
 std::vector<std::complex<double>> Helmholtz<T>::host_solution() const {
   auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), solution_);
-  std::vector<std::complex<double>> out(m.extent(0));
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {static_cast<double>(m(i).real()), static_cast<double>(m(i).imag())};
+  if (comm_->size() == 1) {
+    std::vector<std::complex<double>> out(m.extent(0));
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {static_cast<double>(m(i).real()), static_cast<double>(m(i).imag())};
+    return out;
+  }
+  // owned values with their global indices, gathered on rank 0
+  std::vector<double> mine;
+  mine.reserve(3 * static_cast<std::size_t>(layout_.owned));
+  for (Index i = 0; i < layout_.owned; ++i)
+    mine.insert(mine.end(), {static_cast<double>(layout_.global_of_local[i]), static_cast<double>(m(i).real()),
+                             static_cast<double>(m(i).imag())});
+  const std::vector<double> all = comm_->gather(mine);
+  std::vector<std::complex<double>> out(comm_->rank() == 0 ? static_cast<std::size_t>(dofs_.count) : 0);
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3) out[static_cast<std::size_t>(all[k])] = {all[k + 1], all[k + 2]};
   return out;
 }
 
@@ -412,14 +516,24 @@ template <class T>
 std::vector<char> Helmholtz<T>::constrained_mask() const {
   std::vector<char> mask(static_cast<std::size_t>(dofs_.count), 0);
   auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), constrained_);
-  for (std::size_t k = 0; k < h.extent(0); ++k) mask[h(k)] = 1;
+  for (std::size_t k = 0; k < h.extent(0); ++k) mask[layout_.global_of_local[h(k)]] = 1;
   return mask;
 }
 
 template <class T>
 auto Helmholtz<T>::build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name)
     -> fem::HexFaces<T, C> {
-  const FaceTerm term = face_term(kind);
+  FaceTerm term;  // this part's faces: those of its elements
+  {
+    const FaceTerm all = face_term(kind);
+    std::vector<char> here(static_cast<std::size_t>(cfg_.mesh.element_count()), 0);
+    for (const auto e : layout_.elements) here[e] = 1;
+    for (std::size_t i = 0; i < all.faces.size(); ++i)
+      if (here[all.faces[i].element]) {
+        term.faces.push_back(all.faces[i]);
+        term.coefficient.push_back(all.coefficient[i]);
+      }
+  }
   const int N = dofs_.n1d, N3 = dofs_.nodes_per_element();
   std::vector<std::int64_t> verts;
   for (const auto& f : term.faces)
@@ -439,7 +553,7 @@ auto Helmholtz<T>::build_faces(BoundaryKind kind, const std::vector<char>& const
     const BoundaryFace& bf = term.faces[order[s]];
     const auto nodes = face_local_nodes(N, bf.face);
     for (int a = 0; a < N * N; ++a) {
-      const std::int32_t d = dofs_.element_dofs[bf.element * N3 + nodes[a]];
+      const std::int32_t d = layout_.local_of_global[dofs_.element_dofs[bf.element * N3 + nodes[a]]];
       hd(s, a) = constrained[d] ? fem::constrained_dof(d) : d;
     }
     const auto cf = term.coefficient[order[s]];

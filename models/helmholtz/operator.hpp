@@ -3,9 +3,12 @@
 // faces, identity rows on Dirichlet DoFs. Complex symmetric: K^T = K.
 #pragma once
 
+#include <memory>
+
 #include "fem/boundary_faces.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/helmholtz_operator.hpp"
+#include "helmholtz/parallel.hpp"
 
 namespace polymech::helmholtz {
 
@@ -23,14 +26,32 @@ class HelmholtzOperator {
   Index local_size() const { return el_.local_size(); }
   Index owned_size() const { return el_.owned; }
 
-  // y = K x on the free DoFs, y = x on the constrained ones. A distributed version would update the
-  // ghost entries of x here (halo exchange) and add the ghost rows of y to their owners afterwards.
+  // A part of a distributed operator: the halo exchange of its vectors and the sums over the parts.
+  void distribute(std::shared_ptr<const Halo<V>> halo, std::shared_ptr<const Communicator> comm) {
+    halo_ = std::move(halo);
+    comm_ = std::move(comm);
+  }
+  // The same part with another mass coefficient, without the impedance faces (the shifted Laplacian
+  // S = A + s k^2 M of the preconditioners).
+  HelmholtzOperator shifted(T mass_coefficient) const {
+    HelmholtzOperator s(el_, {}, constrained_, mass_coefficient);
+    s.distribute(halo_, comm_);
+    return s;
+  }
+  // Sums over the parts (krylov.hpp); nothing with one part.
+  void reduce_sum(double* values, int count) const {
+    if (comm_) comm_->sum(values, count);
+  }
+  const Halo<V>* halo() const { return halo_.get(); }
+
+  // y = K x on the free DoFs, y = x on the constrained ones. Distributed: the ghost entries of x are
+  // updated first (one halo exchange); y is then complete on the owned rows, its ghost rows are not.
   void apply(const View1<V>& x, const View1<V>& y) const;
 
   // y = K x with every DoF free (the Dirichlet lifting K g).
   void apply_unconstrained(const View1<V>& x, const View1<V>& y) const;
 
-  // d = diag(K) without forming K (1 on constrained rows).
+  // d = diag(K) without forming K (1 on constrained rows); distributed: ghost entries from their owners.
   void diagonal(const View1<V>& d) const;
 
   const fem::HexElements<T>& elements() const { return el_; }
@@ -39,7 +60,9 @@ class HelmholtzOperator {
 
   // Bytes the operator keeps (element map, geometric factors, faces, constraint list).
   std::size_t bytes() const {
-    return el_.dofs.span() * sizeof(Index) + el_.geometry.span() * sizeof(T) + imp_.dofs.span() * sizeof(Index) +
+    return el_.dofs.span() * sizeof(Index) + el_.geometry.span() * sizeof(T) +
+           el_.geometry_slot.span() * sizeof(Index) +
+           (el_.affine_batches > 0 ? el_.affine.span() * sizeof(T) : 0) + imp_.dofs.span() * sizeof(Index) +
            imp_.weights.span() * sizeof(T) + imp_.coefficient.span() * sizeof(V) + constrained_.span() * sizeof(Index);
   }
 
@@ -48,10 +71,13 @@ class HelmholtzOperator {
   fem::HexFaces<T, V> imp_;
   View1<Index> constrained_;
   T m_ = T(0);
+  std::shared_ptr<const Halo<V>> halo_;
+  std::shared_ptr<const Communicator> comm_;
 };
 
 template <class T>
 void HelmholtzOperator<T>::apply(const View1<V>& x, const View1<V>& y) const {
+  if (halo_) halo_->update(x);
   Kokkos::deep_copy(y, V(0));
   fem::apply_helmholtz_volume(el_, m_, x, y);
   if (imp_.faces() > 0) fem::apply_face_mass(imp_, x, y);
@@ -60,6 +86,7 @@ void HelmholtzOperator<T>::apply(const View1<V>& x, const View1<V>& y) const {
 
 template <class T>
 void HelmholtzOperator<T>::apply_unconstrained(const View1<V>& x, const View1<V>& y) const {
+  if (halo_) halo_->update(x);
   Kokkos::deep_copy(y, V(0));
   fem::apply_helmholtz_volume_unconstrained(el_, m_, x, y);
   if (imp_.faces() > 0) fem::apply_face_mass_unconstrained(imp_, x, y);
@@ -71,6 +98,7 @@ void HelmholtzOperator<T>::diagonal(const View1<V>& d) const {
   fem::add_helmholtz_volume_diagonal(el_, m_, d);
   if (imp_.faces() > 0) fem::add_face_mass_diagonal(imp_, d);
   if (constrained_.extent(0) > 0) fem::fill_constrained(constrained_, V(1), d);
+  if (halo_) halo_->update(d);  // ghost rows: the owners' complete values
 }
 
 // Instantiated in models/helmholtz/helmholtz.cpp (see helmholtz.hpp).

@@ -91,7 +91,62 @@ TEST_P(OperatorVsAssembled, CurvedElements) {
   EXPECT_LT(c.diagonal, 1e-12) << "p = " << p;
 }
 
+// Parallelepipeds (a sheared box): affine but not rectilinear, so the batches take the quadrature
+// path with one Jacobian per element; partial batches (3 elements per chunk) included.
+TEST_P(OperatorVsAssembled, ShearedAffineElementsInPartialBatches) {
+  const int p = GetParam();
+  auto cfg = pm::testing::box_config(p, {3, 3, 2}, {1.0, 0.7, 0.5}, mixed_boundaries());
+  for (std::size_t v = 0; v < cfg.mesh.vertices.size(); v += 3) {
+    cfg.mesh.vertices[v] += 0.3 * cfg.mesh.vertices[v + 1] + 0.2 * cfg.mesh.vertices[v + 2];
+    cfg.mesh.vertices[v + 1] += 0.1 * cfg.mesh.vertices[v + 2];
+  }
+  cfg.chunk_elements = 3;
+  const auto c = compare_with_assembled(cfg);
+  EXPECT_LT(c.apply, 1e-12) << "p = " << p;
+  EXPECT_LT(c.diagonal, 1e-12) << "p = " << p;
+}
+
 INSTANTIATE_TEST_SUITE_P(Orders, OperatorVsAssembled, ::testing::Values(1, 2, 3, 4));
+
+// The storage form of each batch is detected from the Jacobians, not assumed: a box is rectilinear
+// (Kronecker path), a sheared box affine (one Jacobian per element), moved vertices general (factors
+// at every point); the batches of each mesh all take one form, and the three forms agree with the
+// factors stored at every point (Config::affine_geometry = false) to rounding (1e-13).
+TEST(HelmholtzOperator, GeometryFormsAreDetectedAndAgree) {
+  struct Case {
+    const char* name;
+    double shear, perturbation;
+    int rectilinear, affine, general;  // which counts must be non-zero
+  };
+  for (const Case& k : {Case{"box", 0.0, 0.0, 1, 0, 0}, Case{"sheared", 0.4, 0.0, 0, 1, 0},
+                        Case{"distorted", 0.0, 0.2, 0, 0, 1}}) {
+    for (int p = 1; p <= 4; ++p) {
+      auto cfg = pm::testing::box_config(p, {4, 3, 3}, {1.0, 0.8, 0.6}, mixed_boundaries(), k.perturbation);
+      for (std::size_t v = 0; v < cfg.mesh.vertices.size(); v += 3) cfg.mesh.vertices[v] += k.shear * cfg.mesh.vertices[v + 1];
+      hz::Helmholtz<double> model(cfg);
+      cfg.affine_geometry = false;
+      hz::Helmholtz<double> points(cfg);
+      const auto& el = model.op().elements();
+      EXPECT_EQ(el.rectilinear_batches > 0, k.rectilinear == 1) << k.name << " p = " << p;
+      EXPECT_EQ(el.affine_batches > 0, k.affine == 1) << k.name << " p = " << p;
+      EXPECT_EQ(el.general_batches > 0, k.general == 1) << k.name << " p = " << p;
+      EXPECT_EQ(points.op().elements().general_batches,
+                el.rectilinear_batches + el.affine_batches + el.general_batches);
+      const pm::Index n = model.dof_count();
+      const auto x = pm::testing::random_complex<double>(n, 7);
+      pm::View1<C> y1("y1", n), y2("y2", n);
+      model.op().apply(x, y1);
+      points.op().apply(x, y2);
+      const auto a = host(y1), b = host(y2);
+      double num = 0, den = 0;
+      for (pm::Index i = 0; i < n; ++i) {
+        num += std::norm(a[i] - b[i]);
+        den += std::norm(b[i]);
+      }
+      EXPECT_LT(std::sqrt(num / den), 1e-13) << k.name << " p = " << p;
+    }
+  }
+}
 
 // Complex symmetry (the property COCG needs): y^T (K x) = x^T (K y) for random complex x, y, with
 // impedance faces and Dirichlet rows, on curved elements.

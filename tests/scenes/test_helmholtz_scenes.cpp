@@ -138,6 +138,21 @@ TEST(HelmholtzScenes, UnknownKeysAndMissingTables) {
                {"key 'acoustics.frequency' = -500", "must be > 0"});
 }
 
+// [solver] preconditioner: jacobi, none, chebyshev, pmg (+ the shifted Laplacian's settings).
+TEST(HelmholtzScenes, SolverPreconditioner) {
+  const std::string solver = std::string(kBase) + "\n[solver]\npreconditioner = \"pmg\"\nshift = 0.5\nsmoothing_degree = 4\n";
+  polymech::testing::TempDir dir;
+  const auto s = io::load_helmholtz_scene(dir.write("scene.toml", solver));
+  EXPECT_EQ(s.config.preconditioner, hz::Preconditioner::pmg);
+  EXPECT_DOUBLE_EQ(s.config.shifted.shift, 0.5);
+  EXPECT_EQ(s.config.shifted.smoothing_degree, 4);
+  expect_error(replace_once(solver, R"(preconditioner = "pmg")", R"(preconditioner = "ilu")"), 33,
+               {"key 'solver.preconditioner'", "jacobi", "none", "chebyshev", "pmg"});
+  expect_error(replace_once(solver, "shift = 0.5", "shift = 0.0"), 34, {"key 'solver.shift'", "(0, 100)"});
+  expect_error(replace_once(solver, "smoothing_degree = 4", "smoothing_degree = 0"), 35,
+               {"key 'solver.smoothing_degree'", "[1, 50]"});
+}
+
 TEST(HelmholtzScenes, GmshMeshErrorsNameBothFiles) {
   const std::string gmsh = replace_once(replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
                                            "kind = \"gmsh\"\nfile = \"mesh.msh\""),

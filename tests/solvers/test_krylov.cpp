@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "solvers/chebyshev.hpp"
 #include "solvers/krylov.hpp"
 
 namespace pm = polymech;
@@ -203,3 +204,99 @@ TEST(Krylov, ZeroRightHandSideGivesZero) {
   auto h = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), x);
   EXPECT_EQ(h(3), C(0.0, 0.0));
 }
+
+namespace {
+
+// z = d .* r (CUDA: the kernel in a free function, not in a member of a local class).
+void scale_kernel(const pm::View1<C>& d, const pm::View1<C>& r, const pm::View1<C>& z) {
+  Kokkos::parallel_for(
+      "test::scale", pm::range(static_cast<pm::Index>(r.extent(0))), KOKKOS_LAMBDA(const pm::Index i) { z(i) = d(i) * r(i); });
+}
+
+// z = inv .* r, as a general preconditioner.
+struct Scale {
+  pm::View1<C> inv;
+  void apply(const pm::View1<C>& r, const pm::View1<C>& z) const { scale_kernel(inv, r, z); }
+};
+
+// e = x - z.
+void difference(const pm::View1<double>& x, const pm::View1<double>& z, const pm::View1<double>& e) {
+  Kokkos::parallel_for(
+      "test::error", pm::range(static_cast<pm::Index>(x.extent(0))), KOKKOS_LAMBDA(const pm::Index i) { e(i) = x(i) - z(i); });
+}
+
+// A tridiagonal operator that reports its global sums (as a distributed operator would).
+template <class V>
+struct CountingTridiagonal : Tridiagonal<V> {
+  mutable int reductions = 0;
+  void reduce_sum(double*, int count) const { reductions += count > 0 ? 1 : 0; }
+};
+
+}  // namespace
+
+// Jacobi through the fused kernels (non-empty inverse diagonal) gives the same iterates as the
+// unfused path: the solution of a variable-coefficient SPD system matches, in the same iterations.
+TEST(Krylov, FusedJacobiMatchesAGeneralPreconditionerDoingTheSame) {
+  const pm::Index n = 300;
+  Tridiagonal<C> A{n, C(2.5, 0.2), C(-1.0, 0.0)};
+  pm::View1<C> b("b", n), x1("x1", n), x2("x2", n), inv("inv", n);
+  Kokkos::deep_copy(b, C(1.0, -0.5));
+  Kokkos::deep_copy(inv, C(1.0, 0.0) / C(2.5, 0.2));
+  const auto r1 = sv::cocg(A, inv, b, x1);
+  const auto r2 = sv::cocg_preconditioned(A, Scale{inv}, b, x2);
+  ASSERT_TRUE(r1.converged()) << r1.reason;
+  ASSERT_TRUE(r2.converged()) << r2.reason;
+  EXPECT_EQ(r1.iterations, r2.iterations);
+  auto h1 = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), x1);
+  auto h2 = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), x2);
+  double d = 0;
+  for (pm::Index i = 0; i < n; ++i) d = std::max(d, static_cast<double>(Kokkos::abs(h1(i) - h2(i))));
+  EXPECT_LT(d, 1e-12);
+}
+
+// The Lanczos estimate of the spectrum of D^-1 A for the 1D Laplacian tridiag(-1, 2, -1), whose
+// eigenvalues are 1 - cos(j pi / (n + 1)), j = 1..n; and the Chebyshev iteration on the exact interval
+// meets its error bound 2 ((sqrt(k) - 1) / (sqrt(k) + 1))^d: |A^-1 r - P r|_A <= bound |A^-1 r|_A.
+TEST(Krylov, SpectrumEstimateAndChebyshevBound) {
+  const pm::Index n = 400;
+  Tridiagonal<double> A{n, 2.0, -1.0};
+  pm::View1<double> inv("inv", n);
+  Kokkos::deep_copy(inv, 0.5);
+  const auto s = sv::estimate_spectrum(A, inv, 60);
+  const double pi = 3.14159265358979323846, lo = 1 - std::cos(pi / (n + 1)), hi = 1 - std::cos(n * pi / (n + 1));
+  std::printf("Lanczos, %d steps: [%.3e, %.6f] (exact [%.3e, %.6f])\n", s.steps, s.lo, s.hi, lo, hi);
+  EXPECT_NEAR(s.hi, hi, 1e-3);
+  EXPECT_GE(s.lo, lo * (1 - 1e-9));  // Ritz values lie inside the spectrum
+  EXPECT_LT(s.lo, 20 * lo);
+  // exact solution x of A x = b (b = A x), then z = P b: the A-norm error of z against x
+  const auto x = filled<double>(n, real_solution);
+  pm::View1<double> b("b", n), z("z", n), e("e", n), Ae("Ae", n);
+  A.apply(x, b);
+  for (int degree : {10, 100, 300}) {
+    const sv::Chebyshev<Tridiagonal<double>, double> P(&A, inv, 2 * lo, 2 * hi, degree);  // D^-1 A = A / 2
+    P.apply(b, z);
+    difference(x, z, e);
+    A.apply(e, Ae);
+    const double err = std::sqrt(sv::dot_with_norms("test", n, e, Ae).dot), ref = std::sqrt(sv::dot_with_norms("test", n, x, b).dot);
+    const double sk = std::sqrt(hi / lo), bound = 2 * std::pow((sk - 1) / (sk + 1), degree);
+    std::printf("Chebyshev degree %d: error %.3e, bound %.3e\n", degree, err / ref, bound);
+    EXPECT_LE(err / ref, bound * (1 + 1e-6) + 1e-12) << "degree " << degree;
+  }
+  EXPECT_EQ(sv::chebyshev_degree(2 * lo, 2 * hi, 0.1, 1000), 383);  // smallest d with bound <= 0.1
+}
+
+// A distributed operator's reduce_sum is called for every global quantity.
+TEST(Krylov, DistributedOperatorsReduceEveryDotProduct) {
+  CountingTridiagonal<C> A;
+  A.n = 100;
+  A.diag = C(2.2, 0.1);
+  A.off = C(-1.0, 0.0);
+  pm::View1<C> b("b", 100), x("x", 100), inv("inv", 100);
+  Kokkos::deep_copy(b, C(1.0, 0.0));
+  Kokkos::deep_copy(inv, C(1.0, 0.0) / C(2.2, 0.1));
+  const auto r = sv::cocg(A, inv, b, x);
+  ASSERT_TRUE(r.converged()) << r.reason;
+  // |b|, the initial and final true residuals, r^T z at the start; per iteration p^T A p and the fused update
+  EXPECT_EQ(A.reductions, 4 + 2 * r.iterations);
+}
+
