@@ -150,7 +150,7 @@ build_kokkos() {
 # The host packages every build needs.
 HOST_PACKAGES=(build-essential cmake ninja-build pkg-config libeigen3-dev libhdf5-dev libbenchmark-dev
   libgtest-dev libgmock-dev libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libfftw3-dev
-  python3 python3-matplotlib python3-h5py python3-numpy xz-utils)
+  python3 python3-matplotlib python3-h5py python3-numpy xz-utils ccache)
 
 # The OpenMP Kokkos to build against: $Kokkos_ROOT if the user points at one, else the cached build.
 openmp_kokkos_root() {
@@ -163,6 +163,8 @@ setup_host() {
   apt_install "${HOST_PACKAGES[@]}"
   KOKKOS_OPENMP_ROOT="$(openmp_kokkos_root)"
   export KOKKOS_OPENMP_ROOT
+  # compiler output cached across runs (CMakeLists.txt uses ccache when it finds it)
+  export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
 }
 
 # --- CUDA compile gate (ci/cuda_check.sh) ----------------------------------------------------------

@@ -51,7 +51,7 @@ struct ShortRangeForce {
     const T r = kx::sqrt(r2);
     acc.L -= (c * (ds - r) * volume(j) / r) * d;
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     for (int k = 0; k < D; ++k) a(i, k) += inv_rho * acc.L[k];
   }
   KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.L += from.L; }
@@ -81,7 +81,7 @@ struct ShortRangeEnergy {
     const T r = norm(load<D>(y, j) - acc.yi);
     if (r < ds) acc.s += T(0.25) * c * volume(i) * volume(j) * (ds - r) * (ds - r);
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { e(i) = acc.s; }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const { e(i) = acc.s; }
   KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.s += from.s; }
 };
 

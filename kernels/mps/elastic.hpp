@@ -108,7 +108,7 @@ struct ReferenceBondLengths {
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset k) const {
     f.inv_r0(k) = T(1) / norm(load<2>(f.x0, j) - acc.xi);
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index, Accumulator&) const {}
   KOKKOS_INLINE_FUNCTION static void join(Accumulator&, const Accumulator&) {}
 };
 
@@ -140,7 +140,7 @@ template <class T, bool Rotation>
 struct VolumetricStrain : ElasticPairSum<T, Rotation, VolumetricStrain<T, Rotation>> {
   T c;
   KOKKOS_INLINE_FUNCTION static T term(const ElasticPair<T, Rotation>& q) { return dot(q.uij, q.r) * q.w * q.inv_r0 * q.inv_r; }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, typename VolumetricStrain::Accumulator& acc) const { this->f.e(i) = c * acc.s; }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, typename VolumetricStrain::Accumulator& acc) const { this->f.e(i) = c * acc.s; }
 };
 
 template <class T, bool Rotation, class Strategy = neighbors::SerialNeighbors>
@@ -179,7 +179,7 @@ struct ElasticAcceleration {
     acc.lap += shear;
     if constexpr (Rotation) acc.moment += cross(q.r, shear);
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     store<2>(f.a, i, c_vol * acc.vol + c_lap * acc.lap);
     if constexpr (Rotation) f.alpha(i) = c_rot * acc.moment;
   }

@@ -64,7 +64,7 @@ struct OperatorRow {
         acc.s += dot(load<D>(psi, j) - load<D>(psi, i), pg.r) * pg.w / (pg.r0_len * pg.r_len);
     }
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     if constexpr (vector_result)
       store<D>(out_vector, i, c * acc.g);
     else

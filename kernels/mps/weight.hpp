@@ -31,7 +31,7 @@ struct NumberDensity {
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index, Index j, Offset) const {
     acc.sum += weight(norm(load<D>(x, j) - acc.xi), re);
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { n(i) = acc.sum; }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const { n(i) = acc.sum; }
   KOKKOS_INLINE_FUNCTION static void join(Accumulator& into, const Accumulator& from) { into.sum += from.sum; }
 };
 

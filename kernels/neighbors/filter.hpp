@@ -19,7 +19,7 @@ struct FilterCount {
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {0}; }
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const { acc.count += keep(i, j, k) ? 1 : 0; }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const { offsets(i + 1) = acc.count; }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const { offsets(i + 1) = acc.count; }
 };
 
 template <class Keep>
@@ -35,7 +35,7 @@ struct FilterFill {
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const {
     if (keep(i, j, k)) neighbors(acc.slot++) = j;
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index, Accumulator&) const {}
 };
 
 }  // namespace detail

@@ -8,7 +8,7 @@
 //   using Accumulator = ...;                                                // i's loads and its sums
 //   KOKKOS_INLINE_FUNCTION Accumulator start(Index i) const;                // load i, zero the sums
 //   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index j, Offset k) const;  // bond k = (i, j)
-//   KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const;   // write i's results
+//   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const;   // write i's results
 //
 // and, to run with TeamNeighbors, a static join that adds the sums of one accumulator into another:
 //
@@ -18,9 +18,10 @@
 // the row again (a rare second pass). With SerialNeighbors the pairs of a row are visited in list
 // order by one thread, so results are bitwise the same with any number of threads.
 //
-// pair() and gather_row are force-inlined: where GCC kept either as a call, the accumulator lived on
-// the stack and the NOSB deformation-gradient pass (a 30-double accumulator) ran 20-30 % slower than
-// the hand-written loop it replaced (docs/PERFORMANCE.md, "The shared neighbour loop").
+// pair(), finish() and gather_row are force-inlined, and the accumulator is never copied: where GCC
+// kept one of them as a call or copied the accumulator, it lived on the stack and the NOSB
+// deformation-gradient pass (a 30-double accumulator) ran 20-30 % slower than the hand-written loop
+// it replaced (docs/PERFORMANCE.md, "The shared neighbour loop").
 #pragma once
 
 #include <cstddef>
@@ -55,10 +56,7 @@ struct SerialRows {
   KOKKOS_INLINE_FUNCTION void operator()(const Index i) const {
     typename Physics::Accumulator acc = physics.start(i);
     gather_row(list, i, physics, acc);
-    // finish() gets a copy: should the compiler not inline it, the address of the copy escapes, not
-    // that of the sums the row loop keeps in registers
-    typename Physics::Accumulator sums = acc;
-    physics.finish(i, sums);
+    physics.finish(i, acc);
   }
 };
 

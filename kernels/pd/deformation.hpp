@@ -86,7 +86,7 @@ struct DeformationGradient {
   }
   // K_i changes only when one of i's bonds breaks: it is kept (as K^-1) between passes and rebuilt
   // from the intact bonds (a second pass over the row) when it is not known yet or a bond broke.
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     const bool known = f.status(i) & status_shape_known;
     Mat<T, D> kinv;
     if (known && !acc.broke) {

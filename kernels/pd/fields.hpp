@@ -96,7 +96,7 @@ struct BondWeights {
     for (int d = 0; d < D; ++d) xi2 += (x0(j, d) - acc.xi0[d]) * (x0(j, d) - acc.xi0[d]);
     out(k) = weight(volume(j), xi2);
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index, Accumulator&) const {}
   KOKKOS_INLINE_FUNCTION static void join(Accumulator&, const Accumulator&) {}
 };
 

@@ -84,7 +84,7 @@ struct BondForces {
       acc.tj += w * load<D>(f.vv_state, j);
     }
   }
-  KOKKOS_INLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     Vec<T, D> force = load_mat<D>(f.A, i) * acc.wxi + acc.fj;
     if (Hourglass) {
       const Vec<T, D> fs = hg_c * (T(2) * acc.hg_y - load_mat<D>(f.F, i) * acc.hg_xi - acc.hg_fj);
