@@ -59,6 +59,11 @@ struct SnapshotField {
   std::vector<double> values;  // points x components, row-major
 };
 
+// Named argument types: nvcc 11.8 mis-parses nested braced lists passed straight to these functions
+// from function templates (docs/DEVELOPING.md, CUDA pitfalls); callers build a Columns / Fields first.
+using Columns = std::vector<std::vector<double>>;
+using Fields = std::vector<SnapshotField>;
+
 // The geometry every snapshot shares: points and, for meshes, cells of one type.
 struct SnapshotMesh {
   int dim = 2;                    // 2 or 3 coordinates per point

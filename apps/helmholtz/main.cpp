@@ -94,7 +94,7 @@ int run_case(const pm::io::HelmholtzScene& scene, pm::apps::CommonOptions opt) {
   // convergence.csv
   std::vector<double> its(result.history.size());
   for (std::size_t i = 0; i < its.size(); ++i) its[i] = static_cast<double>(i);
-  pm::io::write_csv(opt.out / "convergence.csv", {"iteration", "relative_residual"}, {its, result.history});
+  pm::io::write_csv(opt.out / "convergence.csv", {"iteration", "relative_residual"}, pm::io::Columns{its, result.history});
 
   // field.h5 + field.xdmf
   const auto exact = analytic ? model.host_analytic() : std::vector<std::complex<double>>{};

@@ -48,8 +48,8 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
       hooks.snapshot_every = scene.snapshot_every;
       hooks.snapshot = [&model, &snapshots, dt = c.dt](std::int64_t step) {
         const auto h = model.host_fields();
-        snapshots.add(step, static_cast<double>(step) * dt,
-                      {{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}});
+        const pm::io::Fields fields{{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}};
+        snapshots.add(step, static_cast<double>(step) * dt, fields);
       };
     }
     return hooks;
@@ -68,7 +68,8 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   const double a1_crack = pm::analysis::harmonic_amplitudes(sb, f0, 1)[0];
 
   const std::string comp = scene.harmonics_component;
-  pm::io::write_csv(opt.out / "time_history.csv", {"time", comp + "_crack", comp + "_intact"}, {b.times, b.signal, a.signal});
+  pm::io::write_csv(opt.out / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
+                    pm::io::Columns{b.times, b.signal, a.signal});
   {
     std::vector<double> f, xa, xb;
     for (std::size_t k = 0; k < sa.frequency.size() && sa.frequency[k] <= 6.0 * f0; ++k) {
@@ -76,7 +77,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
       xb.push_back(a1_crack > 0 ? sb.amplitude[k] / a1_crack : 0.0);
       xa.push_back(a1_intact > 0 ? sa.amplitude[k] / a1_intact : 0.0);
     }
-    pm::io::write_csv(opt.out / "spectrum.csv", {"frequency", "crack", "intact"}, {f, xb, xa});
+    pm::io::write_csv(opt.out / "spectrum.csv", {"frequency", "crack", "intact"}, pm::io::Columns{f, xb, xa});
   }
   // u1 and u3 at every probe, both runs (probes_crack.csv, probes_intact.csv)
   auto write_probes = [&](const me::ProbeHistory& h, const std::string& name) {
@@ -93,7 +94,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   write_probes(b.history, "probes_crack.csv");
   if (!b.contact.times.empty())
     pm::io::write_csv(opt.out / "contact_states.csv", {"time", "separation", "stick", "slip"},
-                      {b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
+                      pm::io::Columns{b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
   const auto xdmf = scene.snapshot_every > 0 ? snapshots.finish().filename().string() : std::string();
 
   nlohmann::json j = pm::apps::summary_header("mps_harmonics", scene.header);

@@ -72,7 +72,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
       columns.push_back(h.values[p][f]);
     }
   pm::io::write_csv(opt.out / "probes.csv", header, columns);
-  pm::io::write_csv(opt.out / "energy.csv", {"time", "total_energy"}, {stats.energy.time, stats.energy.total});
+  pm::io::write_csv(opt.out / "energy.csv", {"time", "total_energy"}, pm::io::Columns{stats.energy.time, stats.energy.total});
   const auto xdmf = snapshots.finish();
 
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };

@@ -59,7 +59,7 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
   const auto h = model.host_fields();
   mesh.points = h.x0;
   pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
-  snapshots.add(model.step_index(), model.time(), {{"displacement", D, h.u}, {"velocity", D, h.v}});
+  snapshots.add(model.step_index(), model.time(), pm::io::Fields{{"displacement", D, h.u}, {"velocity", D, h.v}});
   const auto xdmf = snapshots.finish();
   j["files"] = {"summary.json", "fields.h5", xdmf.filename().string()};
   pm::io::write_json(opt.out / "summary.json", j);
