@@ -198,6 +198,7 @@ int main(int argc, char** argv) {
     so.order = order;
     so.frequency = frequency;
     const auto scene = pm::io::load_helmholtz_scene(opt.scene, so);
+    if (pm::apps::announce_cost("helmholtz", scene.header, scene.cost, opt)) return 0;
     return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }
