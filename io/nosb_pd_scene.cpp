@@ -81,11 +81,11 @@ void read_material(const SceneTable& m, np::Config& c) {
 // spacing^dim) and the keys that set that number.
 double particle_estimate(const np::Config& c) {
   const auto& g = c.geometry;
-  const double h = c.spacing, pi = 3.14159265358979323846;
-  if (g.shape == np::Shape::box)
-    return c.dimension == 3 ? (g.length / h + 1) * (g.width / h + 1) * (g.height / h + 1) : (g.length / h + 1) * (g.height / h + 1);
-  if (g.shape == np::Shape::disc) return pi * (g.radius / h + 1) * (g.radius / h + 1) * (g.thickness / h + 1);
-  return pi * (g.radius / h + 1) * (g.radius / h + 1) * (g.length / h + 1);
+  const double pi = 3.14159265358979323846;
+  const auto n = [&](double x) { return std::max(1.0, x / c.spacing); };  // layers along a size x
+  if (g.shape == np::Shape::box) return n(g.length) * n(g.height) * (c.dimension == 3 ? n(g.width) : 1.0);
+  if (g.shape == np::Shape::disc) return pi * n(g.radius) * n(g.radius) * n(g.thickness);
+  return pi * n(g.radius) * n(g.radius) * n(g.length);
 }
 
 std::vector<std::string> size_keys(const np::Config& c, double spacing, const std::string& accuracy) {

@@ -150,8 +150,7 @@ TEST(PdScenes, ARunLargerThanTheMemoryIsRefusedNamingItsSizeKeys) {
 TEST(PdScenes, TheCostEstimateHasParticlesBondsAndSteps) {
   polymech::testing::TempDir t;
   const auto s = io::load_nosb_pd_scene(t.write("scene.toml", kBase));
-  EXPECT_GT(s.cost.items, 1000.0);  // pi 11^2 x 4 layers = 1520
-  EXPECT_LT(s.cost.items, 2000.0);
+  EXPECT_NEAR(s.cost.items, 3.14159265 * 10 * 10 * 3, 1.0);  // R / h = 10, 3 layers
   EXPECT_DOUBLE_EQ(s.cost.pairs, s.cost.items * 122.0);
   EXPECT_DOUBLE_EQ(s.cost.steps, std::ceil(s.end_time / s.config.dt));
   EXPECT_GT(s.cost.seconds, 0.0);
