@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -60,6 +61,13 @@ class MshReader {
     if (out.empty()) fail("expected integers (" + context + ")");
     return out;
   }
+  // A count read from the file: refused if negative or beyond `limit` (a corrupted header).
+  long long count(long long v, const std::string& what, long long limit = 2000000000LL) const {
+    if (v < 0 || v > limit)
+      fail(what + " = " + std::to_string(v) + " is out of range; allowed: 0 .. " + std::to_string(limit) +
+           " (is the file corrupted?)");
+    return v;
+  }
   std::vector<double> reals(const std::string& context, int count) {
     const std::string line = expect_line(context);
     std::istringstream s(line);
@@ -69,6 +77,7 @@ class MshReader {
       char* end = nullptr;
       const double v = std::strtod(tok.c_str(), &end);
       if (end == tok.c_str() || *end != '\0') fail("'" + tok + "' is not a number (" + context + ")");
+      if (!std::isfinite(v)) fail("'" + tok + "' is not a finite number (" + context + ")");
       out.push_back(v);
     }
     if (static_cast<int>(out.size()) < count)
@@ -144,6 +153,7 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
   while (r.next(line)) {
     const std::string section = MshReader::trim(line);
     if (section == "$MeshFormat") {
+      if (have_format) r.fail("a second $MeshFormat section; allowed: one");
       const std::string l = r.expect_line("$MeshFormat");
       std::istringstream s(l);
       std::string version;
@@ -155,7 +165,7 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
       r.expect_end("$MeshFormat");
       have_format = true;
     } else if (section == "$PhysicalNames") {
-      const long long n = r.integers("the number of physical names", 1)[0];
+      const long long n = r.count(r.integers("the number of physical names", 1)[0], "the number of physical names");
       for (long long i = 0; i < n; ++i) {
         const std::string l = r.expect_line("$PhysicalNames");
         std::istringstream s(l);
@@ -169,6 +179,7 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
     } else if (section == "$Entities") {
       if (!have_format) r.fail("$Entities before $MeshFormat");
       const auto counts = r.integers("numPoints numCurves numSurfaces numVolumes", 4);
+      for (int dim = 0; dim < 4; ++dim) r.count(counts[dim], "the number of entities of dimension " + std::to_string(dim));
       for (int dim = 0; dim < 4; ++dim)
         for (long long i = 0; i < counts[dim]; ++i) {
           const std::string l = r.expect_line("$Entities");
@@ -194,12 +205,15 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
     } else if (section == "$PartitionedEntities") {
       r.fail("partitioned meshes are not supported; allowed: a single-part mesh (gmsh without -part)");
     } else if (section == "$Nodes") {
+      if (have_nodes) r.fail("a second $Nodes section; allowed: one");
       if (!have_format) r.fail("$Nodes before $MeshFormat");
       const auto head = r.integers("numEntityBlocks numNodes minNodeTag maxNodeTag", 4);
-      mesh.nodes.reserve(static_cast<std::size_t>(3 * head[1]));
+      r.count(head[0], "numEntityBlocks");
+      const long long total = r.count(head[1], "numNodes");
+      mesh.nodes.reserve(static_cast<std::size_t>(3 * std::min(total, 1000000LL)));
       for (long long b = 0; b < head[0]; ++b) {
         const auto block = r.integers("entityDim entityTag parametric numNodesInBlock", 4);
-        const long long n = block[3];
+        const long long n = r.count(block[3], "numNodesInBlock", total - mesh.node_count());
         const bool parametric = block[2] != 0;
         std::vector<long long> tags(static_cast<std::size_t>(n));
         for (long long i = 0; i < n; ++i) tags[i] = r.integers("a node tag", 1)[0];
@@ -216,11 +230,14 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
       r.expect_end("$Nodes");
       have_nodes = true;
     } else if (section == "$Elements") {
+      if (have_elements) r.fail("a second $Elements section; allowed: one");
       if (!have_nodes) r.fail("$Elements before $Nodes");
       const auto head = r.integers("numEntityBlocks numElements minElementTag maxElementTag", 4);
+      r.count(head[0], "numEntityBlocks");
+      r.count(head[1], "numElements");
       for (long long b = 0; b < head[0]; ++b) {
         const auto block = r.integers("entityDim entityTag elementType numElementsInBlock", 4);
-        const long long dim = block[0], entity = block[1], type = block[2], n = block[3];
+        const long long dim = block[0], entity = block[1], type = block[2], n = r.count(block[3], "numElementsInBlock");
         const int nn = node_count(type);
         if (nn < 0) r.fail("unknown element type " + std::to_string(type));
         const bool keep_hex = dim == 3 && type == 5;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "helmholtz/config.hpp"
+#include "io/cost.hpp"
 #include "io/scene.hpp"
 
 namespace polymech::io {
@@ -29,6 +30,7 @@ struct HelmholtzScene {
   bool write_field = true;
   bool has_profile = false;
   std::array<double, 3> profile_from{0, 0, 0}, profile_to{0, 0, 0};
+  CostEstimate cost;  // DoFs, estimated COCG iterations, memory, time
 };
 
 struct HelmholtzSceneOptions {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/cost.hpp"
 #include "io/scene.hpp"
 #include "mps_elastic/setup.hpp"
 
@@ -32,6 +33,7 @@ struct MpsElasticScene {
   // Harmonic analysis: spectrum of this probe's field, harmonics of the drive frequency.
   std::string harmonics_probe;      // "" = none
   std::string harmonics_component;  // "u1" or "u3"
+  CostEstimate cost;                // particles, bonds, steps (both runs of a crack case), memory, time
 };
 
 struct MpsSceneOptions {

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <string>
 
+#include "io/cost.hpp"
 #include "io/scene.hpp"
 #include "nosb_pd/setup.hpp"
 
@@ -31,6 +32,7 @@ struct NosbPdScene {
   bool stop_after_perforation = true;  // impact: end once the projectile is through and free
   // impact: the experiment's residual velocity at this scene's impact velocity (NaN: none given)
   double experiment_residual_velocity = std::numeric_limits<double>::quiet_NaN();
+  CostEstimate cost;  // particles, bonds, steps (tension: ramp and hold), memory, time
 };
 
 struct NosbPdSceneOptions {

@@ -23,12 +23,15 @@ std::string pd_app(const std::filesystem::path& file) {
 const std::vector<SceneKind>& scene_kinds() {
   static const std::vector<SceneKind> kinds = {
       {"mps_elastic", "MPS elastic waves in 2D plane strain, with crack-face contact (seed 000)",
-       {"mps_point_source", "mps_harmonics"}, [](const std::filesystem::path& f) { load_mps_elastic_scene(f); }, mps_app},
+       {"mps_point_source", "mps_harmonics"}, [](const std::filesystem::path& f) { load_mps_elastic_scene(f); }, mps_app,
+       [](const std::filesystem::path& f) { return load_mps_elastic_scene(f).cost; }},
       {"nosb_pd", "non-ordinary state-based peridynamics, tension and plate perforation (seed 003)",
-       {"pd_tension", "pd_penetration"}, [](const std::filesystem::path& f) { load_nosb_pd_scene(f); }, pd_app},
+       {"pd_tension", "pd_penetration"}, [](const std::filesystem::path& f) { load_nosb_pd_scene(f); }, pd_app,
+       [](const std::filesystem::path& f) { return load_nosb_pd_scene(f).cost; }},
       {"helmholtz", "matrix-free high-order FEM Helmholtz (seed 002 paper 3)", {"helmholtz"},
        [](const std::filesystem::path& f) { load_helmholtz_scene(f); },
-       [](const std::filesystem::path&) { return std::string("helmholtz"); }},
+       [](const std::filesystem::path&) { return std::string("helmholtz"); },
+       [](const std::filesystem::path& f) { return load_helmholtz_scene(f).cost; }},
   };
   return kinds;
 }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "io/cost.hpp"
+
 namespace polymech::io {
 
 struct SceneKind {
@@ -17,6 +19,8 @@ struct SceneKind {
   void (*check)(const std::filesystem::path& file) = nullptr;
   // The app that runs this scene (one of `apps`), from what the scene holds.
   std::string (*app_for)(const std::filesystem::path& file) = nullptr;
+  // Loads a scene at its default accuracy and returns what running it would cost (what --dry-run prints).
+  CostEstimate (*estimate)(const std::filesystem::path& file) = nullptr;
 };
 
 const std::vector<SceneKind>& scene_kinds();

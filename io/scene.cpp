@@ -67,11 +67,14 @@ bool Range::contains(double x) const {
 
 std::string Range::text() const {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  std::string s = "any finite number";
   if (has_lo && has_hi)
-    return std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
-  if (has_lo) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
-  if (has_hi) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
-  return "any finite number";
+    s = std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+  else if (has_lo)
+    s = std::string(lo_open ? "> " : ">= ") + format_number(lo);
+  else if (has_hi)
+    s = std::string(hi_open ? "< " : "<= ") + format_number(hi);
+  return note.empty() ? s : s + " " + note;
 }
 
 Range positive() { return Range{0.0, std::numeric_limits<double>::infinity(), true, false}; }
@@ -170,12 +173,17 @@ std::string SceneTable::string(const std::string& key) const {
   const toml::node* n = lookup(table_, key);
   if (!n) fail(key, "is missing; it is required (a string)");
   if (!n->is_string()) fail(key, "must be a string, got " + type_name(*n));
-  return n->as_string()->get();
+  const std::string v = n->as_string()->get();
+  if (v.find_first_not_of(" \t") == std::string::npos) fail(key, "is empty; it is required (a name or path, not \"\")");
+  return v;
 }
 
 std::string SceneTable::string(const std::string& key, const std::string& fallback) const {
   known(key);
-  return lookup(table_, key) ? string(key) : fallback;
+  const toml::node* n = lookup(table_, key);
+  if (!n) return fallback;
+  if (!n->is_string()) fail(key, "must be a string, got " + type_name(*n));
+  return n->as_string()->get();
 }
 
 std::string SceneTable::choice(const std::string& key, const std::vector<std::string>& allowed) const {

@@ -17,6 +17,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "effects.hpp"
@@ -28,11 +29,17 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// An interval for a number; text() says it in words for error messages ("> 0", "in [1, 10]").
+// An interval for a number; text() says it in words for error messages ("> 0", "in [1, 10]"), followed
+// by `note` when there is one (a unit, what the bounds mean: see io/ranges.hpp).
 struct Range {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   bool lo_open = false, hi_open = false;
+  std::string note;
+
+  Range() = default;
+  Range(double lo_, double hi_, bool lo_open_ = false, bool hi_open_ = false, std::string note_ = {})
+      : lo(lo_), hi(hi_), lo_open(lo_open_), hi_open(hi_open_), note(std::move(note_)) {}
 
   bool contains(double x) const;
   std::string text() const;
@@ -56,6 +63,7 @@ class SceneTable {
   std::int64_t integer(const std::string& key, std::int64_t lo, std::int64_t hi) const;
   std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
   bool boolean(const std::string& key, bool fallback) const;
+  // A required string may not be empty (a name or a path); the optional form returns what is written.
   std::string string(const std::string& key) const;
   std::string string(const std::string& key, const std::string& fallback) const;
   // A string from a fixed set; the error lists the set.

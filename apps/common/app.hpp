@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/kokkos_shim.hpp"
+#include "io/cost.hpp"
 #include "io/output.hpp"
 #include "io/scene.hpp"
 
@@ -24,9 +25,10 @@ struct CommonOptions {
   std::int64_t steps = -1;
   int threads = -1;
   bool quiet = false;
+  bool dry_run = false;
 };
 
-// --scene, --out, --accuracy, --precision, --steps, --threads, --quiet.
+// --scene, --out, --accuracy, --precision, --steps, --threads, --quiet, --dry-run.
 inline void add_common_options(CLI::App& app, CommonOptions& o, const std::string& default_scene,
                                const std::string& default_out) {
   o.scene = default_scene;
@@ -42,6 +44,21 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
   app.add_option("--threads", o.threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--quiet", o.quiet, "no progress lines");
+  app.add_flag("--dry-run", o.dry_run, "check the scene, print the run's size, memory and predicted time, and stop");
+}
+
+// Prints the cost estimate of the loaded scene before a run (stderr, unless --quiet), or for --dry-run
+// on stdout; true when the app should stop here (--dry-run: nothing has been allocated for the run).
+inline bool announce_cost(const char* name, const io::SceneHeader& scene, const io::CostEstimate& cost,
+                          const CommonOptions& o) {
+  const std::string text = "[" + std::string(name) + "] " + scene.file.string() + " at accuracy '" + scene.accuracy +
+                           "', " + scene.precision + " precision\n" + io::describe(cost);
+  if (o.dry_run) {
+    std::printf("%sdry run: scene checked, nothing run\n", text.c_str());
+    return true;
+  }
+  if (!o.quiet) std::fprintf(stderr, "%s", text.c_str());
+  return false;
 }
 
 // The keys every summary.json starts with: the case, its scene file and title, and what it ran with.

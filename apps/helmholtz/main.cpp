@@ -242,6 +242,7 @@ int main(int argc, char** argv) {
 #if POLYMECH_WITH_MPI
     scene.config.communicator = mpi.world();
 #endif
+    if (pm::apps::announce_cost("helmholtz", scene.header, scene.cost, opt)) return 0;
     return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

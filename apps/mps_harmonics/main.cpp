@@ -178,6 +178,7 @@ int main(int argc, char** argv) {
     if (scene.harmonics_probe.empty())
       throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
+    if (pm::apps::announce_cost("mps_harmonics", scene.header, scene.cost, opt)) return 0;
     return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

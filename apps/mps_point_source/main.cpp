@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
     so.precision = opt.precision;
     so.steps = opt.steps;
     const auto scene = pm::io::load_mps_elastic_scene(opt.scene, so);
+    if (pm::apps::announce_cost("mps_point_source", scene.header, scene.cost, opt)) return 0;
     return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
   });
 }

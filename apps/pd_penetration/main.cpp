@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
     so.velocity = velocity;
     so.c_v = cv;
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
+    if (pm::apps::announce_cost("pd_penetration", scene.header, scene.cost, opt)) return 0;
     const bool f = scene.header.precision == "float";
     if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, command) : run_case<double, 2>(scene, opt, command);
     return f ? run_case<float, 3>(scene, opt, command) : run_case<double, 3>(scene, opt, command);

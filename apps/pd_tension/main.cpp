@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
     if (scene.config.loading != np::Loading::tension)
       throw pm::io::SceneError(opt.scene.string() + ": loading.kind must be \"tension\" for pd_tension");
+    if (pm::apps::announce_cost("pd_tension", scene.header, scene.cost, opt)) return 0;
     const bool f = scene.header.precision == "float";
     if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, identify) : run_case<double, 2>(scene, opt, identify);
     return f ? run_case<float, 3>(scene, opt, identify) : run_case<double, 3>(scene, opt, identify);

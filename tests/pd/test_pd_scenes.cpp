@@ -103,8 +103,8 @@ TEST(PdScenes, ShippedScenesLoadAtEveryAccuracy) {
 }
 
 TEST(PdScenes, BadValuesNameFileLineKeyAndWhatIsAllowed) {
-  expect_error(replace_once(kBase, "spacing = 2.0e-3", "spacing = -2.0e-3"), 8, {"key 'discretization.spacing'", "must be > 0"});
-  expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 0.8"), 9, {"key 'discretization.horizon_ratio' = 0.8", "must be >= 1"});
+  expect_error(replace_once(kBase, "spacing = 2.0e-3", "spacing = -2.0e-3"), 8, {"key 'discretization.spacing'", "must be in [1e-09, 100] m"});
+  expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 0.8"), 9, {"key 'discretization.horizon_ratio' = 0.8", "must be in [1, 8] spacings"});
   expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 3.0\nhorizon = 3"), 10,
                {"unknown key 'discretization.horizon'", "horizon_ratio"});
   expect_error(replace_once(kBase, R"(effects = ["velocity_viscosity", "damage", "contact"])", R"(effects = ["viscosity", "damage", "contact"])"), 5,
@@ -128,4 +128,30 @@ TEST(PdScenes, MissingFileIsAClearError) {
   } catch (const io::SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/pd.toml: scene file not found"), std::string::npos) << e.what();
   }
+}
+
+// Issue 16: implausible values and runs too large for the memory are refused by the loader.
+TEST(PdScenes, ImplausibleValuesAreRefusedWithTheirRange) {
+  expect_error(replace_once(kBase, "horizon_ratio = 3.0", "horizon_ratio = 1e300"), 9,
+               {"key 'discretization.horizon_ratio' = 1e+300 is out of range", "in [1, 8] spacings"});
+  expect_error(replace_once(kBase, "youngs_modulus = 200.0e9", "youngs_modulus = 1e-300"), 19, {"key 'material.youngs_modulus'", "Pa"});
+  expect_error(replace_once(kBase, "velocity = 300.0", "velocity = inf"), 42, {"key 'projectile.velocity' = inf", "20 km/s"});
+  expect_error(replace_once(kBase, "end_time = 2.0e-5", "end_time = 1e300"), 45, {"key 'time.end_time' = 1e+300", "a plausible duration"});
+  expect_error(replace_once(kBase, "density = 7850.0", "density = 0.01"), 18, {"key 'material.density' = 0.01", "P-wave speed"});
+}
+
+TEST(PdScenes, ARunLargerThanTheMemoryIsRefusedNamingItsSizeKeys) {
+  ::setenv("POLYMECH_MEMORY_LIMIT", "1M", 1);
+  expect_error(kBase, 7, {"[discretization]: the run needs about", "discretization.spacing = 0.002 m",
+                          "discretization.horizon_ratio = 3", "geometry.radius = 0.02 m", "geometry.thickness = 0.006 m"});
+  ::unsetenv("POLYMECH_MEMORY_LIMIT");
+}
+
+TEST(PdScenes, TheCostEstimateHasParticlesBondsAndSteps) {
+  polymech::testing::TempDir t;
+  const auto s = io::load_nosb_pd_scene(t.write("scene.toml", kBase));
+  EXPECT_NEAR(s.cost.items, 3.14159265 * 10 * 10 * 3, 1.0);  // R / h = 10, 3 layers
+  EXPECT_DOUBLE_EQ(s.cost.pairs, s.cost.items * 122.0);
+  EXPECT_DOUBLE_EQ(s.cost.steps, std::ceil(s.end_time / s.config.dt));
+  EXPECT_GT(s.cost.seconds, 0.0);
 }

@@ -99,7 +99,7 @@ TEST(HelmholtzScenes, OrderOutOfRange) {
 
 TEST(HelmholtzScenes, BadMeshSizes) {
   expect_error(replace_once(kBase, "lengths = [1.0, 0.2, 0.1]", "lengths = [-1.0, 0.2, 0.1]"), 11,
-               {"key 'mesh.lengths'", "-1", "must be > 0"});
+               {"key 'mesh.lengths'", "-1", "must be in [1e-06, 10000] m"});
   expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2.5, 1]"), 12,
                {"key 'mesh.elements'", "whole numbers"});
   expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [10, 2]"), 12, {"must have 3 entries"});
@@ -122,7 +122,7 @@ TEST(HelmholtzScenes, BoundaryNamesAndValues) {
                 "xmin, xmax, ymin, ymax, zmin, zmax"});
   expect_error(replace_once(kBase, R"(names = ["xmax"])", R"(names = ["xmin"])"), 25, {"a second time"});
   expect_error(replace_once(kBase, "impedance = 445.9", "impedance = -1.0"), 27,
-               {"key 'boundary[1].impedance' = -1 is out of range: must be > 0"});
+               {"key 'boundary[1].impedance' = -1 is out of range: must be in [0.001, 1e+12]"});
   expect_error(replace_once(kBase, "impedance = 445.9\n", ""), 24, {"key 'boundary[1].impedance' is missing"});
   expect_error(replace_once(kBase, "velocity = 0.014", "velocity = 0.014\nimpedance = 3.0"), 23,
                {"unknown key 'boundary[0].impedance'", "kind, names, velocity"});
@@ -135,7 +135,7 @@ TEST(HelmholtzScenes, UnknownKeysAndMissingTables) {
                {"unknown key 'acoustics.speed'", "density, frequency, sound_speed"});
   expect_error(replace_once(kBase, "[acoustics]\n", "[acoustic]\n"), 1, {"[acoustics] is missing"});
   expect_error(replace_once(kBase, "frequency = 500.0", "frequency = -500.0"), 16,
-               {"key 'acoustics.frequency' = -500", "must be > 0"});
+               {"key 'acoustics.frequency' = -500", "must be in [0.001, 1e+10] Hz"});
 }
 
 // [solver] preconditioner: jacobi, none, chebyshev, pmg (+ the shifted Laplacian's settings).
@@ -186,4 +186,49 @@ TEST(HelmholtzScenes, GmshDuctSolvesToTheAnalyticPressure) {
   const auto r = model.solve();
   EXPECT_TRUE(r.converged()) << r.reason;
   EXPECT_LT(model.l2_error().relative(), 1e-2);  // 4.9e-3 on 23 unstructured hexahedra
+}
+
+// Issue 16: implausible values, profiles outside the mesh and corrupted meshes are refused by the loader.
+TEST(HelmholtzScenes, ImplausibleValuesAreRefusedWithTheirRange) {
+  expect_error(replace_once(kBase, "frequency = 500.0", "frequency = 1e300"), 16,
+               {"key 'acoustics.frequency' = 1e+300 is out of range", "Hz"});
+  expect_error(replace_once(kBase, "lengths = [1.0, 0.2, 0.1]", "lengths = [1e300, 1, 1]"), 11,
+               {"key 'mesh.lengths' has the element 1e+300", "m (a plausible size"});
+  expect_error(replace_once(kBase, "sound_speed = 343.0", "sound_speed = 1e-300"), 15, {"key 'acoustics.sound_speed'", "m/s"});
+  expect_error(replace_once(kBase, "impedance = 445.9", "impedance = inf"), 27, {"key 'boundary[1].impedance' = inf"});
+}
+
+TEST(HelmholtzScenes, ProfilesOutsideTheMeshOrOfZeroLengthAreRefused) {
+  const std::string with_profile = std::string(kBase) + "\n[output]\nprofile_from = [0.0, 0.1, 0.05]\nprofile_to = [1.0, 0.1, 0.05]\n";
+  expect_error(replace_once(with_profile, "profile_to = [1.0, 0.1, 0.05]", "profile_to = [2.0, 0.1, 0.05]"), 34,
+               {"key 'output.profile_to' = (2, 0.1, 0.05) is outside the mesh", "bounding box (0, 0, 0) .. (1, 0.2, 0.1)"});
+  expect_error(replace_once(with_profile, "profile_from = [0.0, 0.1, 0.05]", "profile_from = [0.0, -0.1, 0.05]"), 33,
+               {"key 'output.profile_from'", "outside the mesh"});
+  expect_error(replace_once(with_profile, "profile_to = [1.0, 0.1, 0.05]", "profile_to = [0.0, 0.1, 0.05]"), 34,
+               {"key 'output.profile_to'", "the same point as profile_from", "length > 0"});
+  polymech::testing::TempDir dir;
+  EXPECT_TRUE(io::load_helmholtz_scene(dir.write("scene.toml", with_profile)).has_profile);
+}
+
+TEST(HelmholtzScenes, ARunLargerThanTheMemoryIsRefusedNamingItsSizeKeys) {
+  ::setenv("POLYMECH_MEMORY_LIMIT", "10K", 1);
+  expect_error(kBase, 9, {"[mesh]: the run needs about", "mesh.elements = [10, 2, 1]", "discretization.order = 2"});
+  ::unsetenv("POLYMECH_MEMORY_LIMIT");
+  // 1e15 elements are refused before any mesh is built
+  expect_error(replace_once(kBase, "elements = [10, 2, 1]", "elements = [100000, 100000, 100000]"), 9,
+               {"[mesh]: the run would have", "DoFs, more than"});
+}
+
+TEST(HelmholtzScenes, EmptyMeshFileAndCorruptedMeshesAreRefused) {
+  const std::string plain = replace_once(kBase, "kind = \"box\"\nlengths = [1.0, 0.2, 0.1]\nelements = [10, 2, 1]",
+                                         "kind = \"gmsh\"\nfile = \"mesh.msh\"");
+  expect_error(replace_once(plain, "file = \"mesh.msh\"", "file = \"\""), 11, {"key 'mesh.file' is empty"});
+  const std::string head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  expect_error(plain, 11, {"key 'mesh.file'", "mesh.msh:5: numNodes = -3 is out of range"}, head + "$Nodes\n1 -3 1 3\n");
+  expect_error(plain, 11, {"mesh.msh:6: numNodesInBlock = 1000000 is out of range; allowed: 0 .. 2"},
+               head + "$Nodes\n1 2 1 2\n3 1 0 1000000\n");
+  expect_error(plain, 11, {"mesh.msh:8: 'nan' is not a finite number (node coordinates x y z)"},
+               head + "$Nodes\n1 1 1 1\n3 1 0 1\n1\nnan 0 0\n$EndNodes\n");
+  expect_error(plain, 11, {"mesh.msh:6: unexpected end of file in a node tag"}, head + "$Nodes\n1 2 1 2\n3 1 0 2\n");
+  expect_error(plain, 11, {"mesh.msh:4: a second $MeshFormat section"}, head + head);
 }
