@@ -165,6 +165,7 @@ setup_host() {
   export KOKKOS_OPENMP_ROOT
   # compiler output cached across runs (CMakeLists.txt uses ccache when it finds it)
   export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$POLYMECH_ROOT}"  # hits across clones in other folders
 }
 
 # --- CUDA compile gate (ci/cuda_check.sh) ----------------------------------------------------------
