@@ -117,12 +117,24 @@ SnapshotWriter::SnapshotWriter(const std::filesystem::path& dir, const std::stri
     : dir_(dir), mesh_(std::move(mesh)), double_(double_precision) {
   if (mesh_.dim != 2 && mesh_.dim != 3) throw OutputError("SnapshotWriter: dim must be 2 or 3");
   make_output_dir(dir_);
+  stem_ = stem;
   h5_ = dir_ / (stem + ".h5");
   h5_part_ = dir_ / (stem + ".h5.part");
   xdmf_ = dir_ / (stem + ".xdmf");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become OutputErrors, not stderr dumps
+  open_segment(true);
+}
+
+std::filesystem::path SnapshotWriter::segment_path(int k) const {
+  char b[32];
+  std::snprintf(b, sizeof b, ".seg%04d.h5.part", k);
+  return dir_ / (stem_ + b);
+}
+
+void SnapshotWriter::open_segment(bool with_mesh) {
   file_ = H5Fcreate(h5_part_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) throw OutputError(h5_part_.string() + ": cannot create HDF5 file");
+  if (!with_mesh) return;
   hid_t g = H5Gcreate2(file_, "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   write_dataset(g, "points", mesh_.points.data(), static_cast<hsize_t>(mesh_.point_count()),
                 static_cast<hsize_t>(mesh_.dim), H5T_IEEE_F64LE);
@@ -130,6 +142,70 @@ SnapshotWriter::SnapshotWriter(const std::filesystem::path& dir, const std::stri
     write_dataset_i64(g, "cells", mesh_.cells.data(), mesh_.cells.size() / static_cast<std::size_t>(mesh_.nodes_per_cell),
                       static_cast<hsize_t>(mesh_.nodes_per_cell));
   H5Gclose(g);
+}
+
+void SnapshotWriter::save(models::Archive& a, const std::string& prefix) {
+  check(H5Fclose(file_), "closing " + h5_part_.string());
+  file_ = -1;
+  std::error_code ec;
+  std::filesystem::rename(h5_part_, segment_path(sealed_), ec);
+  if (ec) throw OutputError(segment_path(sealed_).string() + ": cannot seal the snapshot segment (" + ec.message() + ")");
+  ++sealed_;
+  open_segment(false);
+  a.put(prefix + "segments", static_cast<std::int64_t>(sealed_));
+  a.put(prefix + "count", static_cast<std::uint64_t>(steps_.size()));
+  std::vector<std::int64_t> steps, segments, comps;
+  std::vector<double> times;
+  std::string names;
+  for (const auto& w : steps_) {
+    steps.push_back(w.step);
+    times.push_back(w.time);
+    segments.push_back(w.segment);
+    comps.push_back(static_cast<std::int64_t>(w.fields.size()));
+    for (const auto& [n, c] : w.fields) {
+      names += n + '\n';
+      comps.push_back(c);
+    }
+  }
+  a.put_vector(prefix + "steps", steps);
+  a.put_vector(prefix + "times", times);
+  a.put_vector(prefix + "segment_of", segments);
+  a.put_vector(prefix + "components", comps);
+  a.put_string(prefix + "field_names", names);
+}
+
+void SnapshotWriter::resume(const models::Archive& a, const std::string& prefix) {
+  const auto sealed = a.get<std::int64_t>(prefix + "segments");
+  const auto steps = a.get_vector<std::int64_t>(prefix + "steps");
+  const auto times = a.get_vector<double>(prefix + "times");
+  const auto segments = a.get_vector<std::int64_t>(prefix + "segment_of");
+  const auto comps = a.get_vector<std::int64_t>(prefix + "components");
+  const std::string names = a.get_string(prefix + "field_names");
+  for (std::int64_t k = 0; k < sealed; ++k)
+    if (!std::filesystem::exists(segment_path(static_cast<int>(k))))
+      throw OutputError(segment_path(static_cast<int>(k)).string() +
+                        ": missing (the checkpoint's snapshots are in it; was the output folder changed?)");
+  std::error_code ec;
+  for (int k = static_cast<int>(sealed);; ++k) {  // segments sealed after this checkpoint: redone
+    if (!std::filesystem::exists(segment_path(k))) break;
+    std::filesystem::remove(segment_path(k), ec);
+  }
+  // the open segment was created with the mesh; the mesh of the merged file comes from segment 0
+  H5Fclose(file_);
+  open_segment(false);
+  sealed_ = static_cast<int>(sealed);
+  steps_.clear();
+  std::size_t c = 0, pos = 0;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    Written w{steps[k], times[k], {}, static_cast<int>(segments[k])};
+    const auto nf = comps.at(c++);
+    for (std::int64_t f = 0; f < nf; ++f) {
+      const auto end = names.find('\n', pos);
+      w.fields.emplace_back(names.substr(pos, end - pos), static_cast<int>(comps.at(c++)));
+      pos = end + 1;
+    }
+    steps_.push_back(std::move(w));
+  }
 }
 
 SnapshotWriter::~SnapshotWriter() {
@@ -155,6 +231,7 @@ void SnapshotWriter::add(std::int64_t step, double time, const std::vector<Snaps
                   double_ ? H5T_IEEE_F64LE : H5T_IEEE_F32LE);
     w.fields.emplace_back(f.name, f.components);
   }
+  w.segment = sealed_;
   H5Gclose(g);
   H5Fflush(file_, H5F_SCOPE_LOCAL);
   steps_.push_back(std::move(w));
@@ -164,8 +241,35 @@ std::filesystem::path SnapshotWriter::finish() {
   check(H5Fclose(file_), "closing " + h5_part_.string());
   file_ = -1;
   std::error_code ec;
+  if (sealed_ > 0) {  // merge the segments: mesh from the first, each snapshot from its own
+    std::filesystem::rename(h5_part_, segment_path(sealed_), ec);
+    if (ec) throw OutputError(segment_path(sealed_).string() + ": cannot rename (" + ec.message() + ")");
+    hid_t out = H5Fcreate(h5_part_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (out < 0) throw OutputError(h5_part_.string() + ": cannot create HDF5 file");
+    for (int k = 0; k <= sealed_; ++k) {
+      const auto seg = segment_path(k);
+      hid_t in = H5Fopen(seg.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+      if (in < 0) {
+        H5Fclose(out);
+        throw OutputError(seg.string() + ": cannot open snapshot segment");
+      }
+      herr_t st = k == 0 ? H5Ocopy(in, "mesh", out, "mesh", H5P_DEFAULT, H5P_DEFAULT) : 0;
+      for (const auto& w : steps_)
+        if (w.segment == k && st >= 0) {
+          const std::string g = step_group(w.step);
+          st = H5Ocopy(in, g.c_str(), out, g.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+        }
+      H5Fclose(in);
+      if (st < 0) {
+        H5Fclose(out);
+        throw OutputError(seg.string() + ": cannot copy its snapshots into " + h5_part_.string());
+      }
+    }
+    check(H5Fclose(out), "closing " + h5_part_.string());
+  }
   std::filesystem::rename(h5_part_, h5_, ec);
   if (ec) throw OutputError(h5_.string() + ": cannot rename into place (" + ec.message() + ")");
+  for (int k = 0; k <= sealed_ && sealed_ > 0; ++k) std::filesystem::remove(segment_path(k), ec);
   finished_ = true;
 
   const std::string h5name = h5_.filename().string();

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "common/archive.hpp"
+
 namespace polymech::io {
 
 class OutputError : public std::runtime_error {
@@ -78,6 +80,11 @@ struct SnapshotMesh {
 // "<stem>.xdmf", a temporal collection over the snapshots. Fields are stored as float32 unless
 // double_precision is set (results are read by eye and by plots; float keeps 2e6-particle snapshots
 // small).
+//
+// Checkpoints: save() closes the open HDF5 file as a sealed segment "<stem>.seg<k>.h5.part" (never
+// written again, so a kill after it cannot damage what the checkpoint points to) and records the
+// snapshots so far; resume() on a new writer continues from such a record, dropping any segment
+// sealed after it. finish() merges the segments into "<stem>.h5".
 class SnapshotWriter {
  public:
   SnapshotWriter(const std::filesystem::path& dir, const std::string& stem, SnapshotMesh mesh,
@@ -91,13 +98,23 @@ class SnapshotWriter {
   std::filesystem::path finish();
   std::size_t snapshots() const { return steps_.size(); }
 
+  // For a checkpoint: seal the open segment and put what was written under "<prefix>...".
+  void save(models::Archive& a, const std::string& prefix = "snapshots/");
+  // Continue from a checkpoint's record (on a writer just constructed for the same mesh).
+  void resume(const models::Archive& a, const std::string& prefix = "snapshots/");
+
  private:
   struct Written {
     std::int64_t step;
     double time;
     std::vector<std::pair<std::string, int>> fields;  // name, components
+    int segment = 0;                                  // the HDF5 file it is in
   };
+  std::filesystem::path segment_path(int k) const;
+  void open_segment(bool with_mesh);
   std::filesystem::path dir_, h5_, h5_part_, xdmf_;
+  std::string stem_;
+  int sealed_ = 0;  // segments sealed so far; the open file is segment `sealed_`
   SnapshotMesh mesh_;
   bool double_;
   std::int64_t file_ = -1;  // hid_t

@@ -32,12 +32,14 @@ class Progress {
     if (enabled_) print(step, clock::now(), true);
   }
   double elapsed() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
+  // A run restarted from a checkpoint at `step`: rates and ETA count the steps from there.
+  void resume_at(std::int64_t step) { first_ = step; }
 
  private:
   using clock = std::chrono::steady_clock;
   void print(std::int64_t step, clock::time_point now, bool final) const {
     const double secs = std::chrono::duration<double>(now - start_).count();
-    const double rate = secs > 0 ? static_cast<double>(step) / secs : 0.0;
+    const double rate = secs > 0 ? static_cast<double>(step - first_) / secs : 0.0;
     const double eta = rate > 0 ? static_cast<double>(total_ - step) / rate : 0.0;
     const auto e = static_cast<long long>(eta + 0.5);
     std::fprintf(stderr, "[%s] step %lld/%lld (%.0f%%)  t = %.3e s  %.0f steps/s  %s %lld:%02lld\n", label_.c_str(),
@@ -50,6 +52,7 @@ class Progress {
 
   std::string label_;
   std::int64_t total_;
+  std::int64_t first_ = 0;
   double dt_;
   bool enabled_;
   double interval_;

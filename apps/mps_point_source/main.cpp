@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/progress.hpp"
 #include "mps_elastic/run.hpp"
@@ -16,8 +17,9 @@ namespace me = polymech::mps_elastic;
 namespace {
 
 template <class T>
-int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
+int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt) {
   const me::Config& c = scene.config;
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("mps_point_source", scene.header, c.steps));
   pm::io::make_output_dir(opt.out);
   me::MpsElastic<T> model(c);
   std::fprintf(stderr,
@@ -48,9 +50,28 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   hooks.after_step = [&](std::int64_t k) { progress.update(k); };
   hooks.snapshot_every = scene.snapshot_every;
   hooks.snapshot = snapshot;
-  const me::RunStats stats = me::run(model, c.steps, hooks);
+  hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
+  checkpoints.attach(hooks, [&](pm::models::Archive& a) { snapshots.save(a); }, opt.quiet);
+  if (hooks.resume) {
+    snapshots.resume(*hooks.resume);
+    progress.resume_at(checkpoints.resume_step());
+  }
+  const me::RunStats stats = me::run(model, c.steps - checkpoints.resume_step(), hooks);
   progress.done(stats.steps);
-  if (!stats.finite) throw std::runtime_error("the run became unstable at step " + std::to_string(stats.bad_step) + ": " + stats.reason);
+  if (stats.diverged) {  // the summary says why and where; the last snapshot is the last good state
+    const auto xdmf = snapshots.finish();
+    nlohmann::json j = pm::apps::summary_header("mps_point_source", scene.header);
+    pm::apps::put_run_record(j, stats);
+    j["steps"] = stats.steps;
+    j["files"] = {"summary.json", xdmf.filename().string()};
+    pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
+    checkpoints.finished();
+    std::fprintf(stderr, "mps_point_source: the run diverged at step %lld: %s; the last good state (step %lld) is the last snapshot in %s\n",
+                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step),
+                 xdmf.c_str());
+    return 1;
+  }
 
   // Wave speeds from arrival times (seed 000 §5.1).
   const auto src = me::excitation_source_point(c);
@@ -104,8 +125,10 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["energy_final"] = stats.energy.last;
   j["energy_drift"] = stats.energy.drift();
   j["energy_spread"] = stats.energy.spread();
+  pm::apps::put_run_record(j, stats);
   j["files"] = {"summary.json", "probes.csv", "energy.csv", "fields.h5", xdmf.filename().string()};
   pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
 
   std::printf("cp: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cp, cp_a, 100 * (speeds.cp - cp_a) / cp_a);
   std::printf("cs: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cs, cs_a, 100 * (speeds.cs - cs_a) / cs_a);
@@ -123,6 +146,8 @@ int main(int argc, char** argv) {
   CLI::App app{"MPS elastic waves from a point source in steel (seed 000 section 5.1)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/mps/point_source.toml", "out/mps_point_source");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("mps_point_source", [&] {
     pm::apps::KokkosSession kokkos(opt.threads);
@@ -132,6 +157,6 @@ int main(int argc, char** argv) {
     so.steps = opt.steps;
     const auto scene = pm::io::load_mps_elastic_scene(opt.scene, so);
     if (pm::apps::announce_cost("mps_point_source", scene.header, scene.cost, opt)) return 0;
-    return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
+    return scene.header.precision == "float" ? run_case<float>(scene, opt, ropt) : run_case<double>(scene, opt, ropt);
   });
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "io/progress.hpp"
 #include "nosb_pd/impact.hpp"
@@ -18,12 +19,16 @@ namespace np = polymech::nosb_pd;
 namespace {
 
 template <class T, int D>
-int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& opt, const std::string& argv0) {
+int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt,
+             const std::string& argv0) {
   const np::Config& c = scene.config;
+  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.end_time / c.dt));
+  char extra[96];
+  std::snprintf(extra, sizeof extra, "velocity=%.17g; c_v=%.17g", c.projectile.velocity, c.stabilization.c_v);
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("pd_penetration", scene.header, steps, extra));
   pm::io::make_output_dir(opt.out);
   np::Impact<T, D> model(c);
   const np::NosbPd<T, D>& plate = model.plate();
-  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.end_time / c.dt));
   std::fprintf(stderr,
                "[pd_penetration] %s\n  accuracy %s (spacing %.3g m, m = %g), %s precision, %d particles, %lld bonds\n"
                "  v0 = %.1f m/s, c_v = %g, omega_v = %.3g rad/s, dt = %.3g s (limit %.3g s), up to %lld steps, %d threads\n",
@@ -49,11 +54,18 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   hooks.sample_every = scene.sample_every;
   hooks.snapshot_every = scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0;
   hooks.snapshot = snapshot;
-  const np::RunStats stats = np::run_impact(model, steps, hooks, scene.stop_after_perforation);
+  hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
+  checkpoints.attach(hooks, [&](pm::models::Archive& a) { snapshots.save(a); }, opt.quiet);
+  if (hooks.resume) {
+    snapshots.resume(*hooks.resume);
+    progress.resume_at(checkpoints.resume_step());
+  }
+  const np::RunStats stats = np::run_impact(model, steps - checkpoints.resume_step(), hooks, scene.stop_after_perforation);
   progress.done(stats.steps);
   if (stats.diverged)
-    std::fprintf(stderr, "[pd_penetration] the run diverged at step %lld: %s (no zero-energy control?)\n",
-                 static_cast<long long>(stats.bad_step), stats.reason.c_str());
+    std::fprintf(stderr, "[pd_penetration] the run diverged at step %lld: %s (no zero-energy control?); the last good "
+                 "state (step %lld) is the last snapshot\n",
+                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step));
   const np::ImpactState impact = np::analyse_impact(model);
 
   // energy.csv and projectile.csv: the time series
@@ -83,8 +95,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
   j["perforated"] = impact.perforated;  // through and free of contact
   j["through"] = impact.through;        // nose more than a horizon below the plate (a plug may ride on it)
-  j["diverged"] = stats.diverged;
-  if (stats.diverged) j["diverged_reason"] = stats.reason;
+  pm::apps::put_run_record(j, stats);
   j["experiment_residual_velocity"] = num(vexp);
   j["residual_velocity_error"] = num(stats.diverged ? NAN : impact.residual_velocity - vexp);
   j["particles"] = plate.particles();
@@ -118,6 +129,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
                  {"projectile_kinetic", last.projectile_kinetic}};
   j["files"] = {"summary.json", "energy.csv", "projectile.csv", "fields.h5", xdmf.filename().string()};
   pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
 
   std::printf("v0 = %.1f m/s -> residual %.1f m/s (%s)%s\n", v0, impact.residual_velocity,
               impact.perforated ? "perforated" : (impact.through ? "through, plug on the nose" : "not through at the end of the run"),
@@ -127,7 +139,7 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
               stats.wall_seconds);
   std::printf("results in %s: summary.json, energy.csv, projectile.csv, %s (open in ParaView)\n", opt.out.c_str(),
               xdmf.filename().c_str());
-  return 0;
+  return stats.diverged ? 1 : 0;
 }
 
 }  // namespace
@@ -136,6 +148,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Rigid blunt projectile perforating a steel plate, NOSB peridynamics (seed 003 Figs. 3-7)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/pd/penetration_303.toml", "out/pd_penetration");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   double velocity = 0, cv = -1;
   app.add_option("--velocity", velocity, "impact velocity [m/s] (default: the scene's)")->check(CLI::PositiveNumber);
   app.add_option("--cv", cv, "velocity viscosity coefficient c_v (default: the scene's)")->check(CLI::NonNegativeNumber);
@@ -152,7 +166,8 @@ int main(int argc, char** argv) {
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
     if (pm::apps::announce_cost("pd_penetration", scene.header, scene.cost, opt)) return 0;
     const bool f = scene.header.precision == "float";
-    if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, command) : run_case<double, 2>(scene, opt, command);
-    return f ? run_case<float, 3>(scene, opt, command) : run_case<double, 3>(scene, opt, command);
+    if (scene.config.dimension == 2)
+      return f ? run_case<float, 2>(scene, opt, ropt, command) : run_case<double, 2>(scene, opt, ropt, command);
+    return f ? run_case<float, 3>(scene, opt, ropt, command) : run_case<double, 3>(scene, opt, ropt, command);
   });
 }

@@ -41,6 +41,17 @@ class VerletList {
     return true;
   }
 
+  // For a checkpoint: the positions of the last build and the build count; restore() rebuilds the
+  // list from those positions, so a restarted run holds the list (and its pair order) it had.
+  const VecView<T, D>& positions_at_build() const { return x_at_build_; }
+  void restore(const VecView<T, D>& x_at_build, int builds) {
+    if (x_at_build_.extent(0) != x_at_build.extent(0))
+      x_at_build_ = VecView<T, D>("polymech::neighbors::x_at_build", x_at_build.extent(0));
+    Kokkos::deep_copy(x_at_build_, x_at_build);
+    search_.build(x_at_build_, radius_ + skin_, kind_, list_);
+    builds_ = builds;
+  }
+
   const NeighborList& list() const { return list_; }
   T radius() const { return radius_; }
   T skin() const { return skin_; }

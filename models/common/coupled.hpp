@@ -82,6 +82,18 @@ class CoupledModel {
     return state_;
   }
 
+  // Both models' complete states (the interaction holds none between steps: it recomputes its
+  // forces from the models' state).
+  void save(Archive& a, const std::string& prefix) {
+    a_.save(a, prefix + "first/");
+    b_.save(a, prefix + "second/");
+  }
+  void load(const Archive& a, const std::string& prefix) {
+    a_.load(a, prefix + "first/");
+    b_.load(a, prefix + "second/");
+    prepared_ = true;
+  }
+
   A& first() { return a_; }
   B& second() { return b_; }
   Interaction& interaction() { return interaction_; }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/archive.hpp"
 #include "core/types.hpp"
 
 namespace polymech::models {
@@ -51,6 +52,19 @@ class ProbeBuffer {
   const ProbeHistory& history() {
     flush();
     return history_;
+  }
+
+  // The record so far into a checkpoint, and back (a buffer built for the same probes).
+  void save(Archive& a, const std::string& prefix) {
+    flush();
+    a.put_vector(prefix + "times", history_.times);
+    for (std::size_t p = 0; p < history_.values.size(); ++p) a.put_columns(prefix + std::to_string(p), history_.values[p]);
+  }
+  void load(const Archive& a, const std::string& prefix) {
+    pending_ = 0;
+    pending_times_.clear();
+    history_.times = a.get_vector<double>(prefix + "times");
+    for (std::size_t p = 0; p < history_.values.size(); ++p) history_.values[p] = a.get_columns<double>(prefix + std::to_string(p));
   }
 
  private:

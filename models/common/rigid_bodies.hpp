@@ -55,6 +55,15 @@ class RigidBodies {
   std::int64_t step_index() const { return step_; }
   void set_step_index(std::int64_t k) { step_ = k; }
   const StateRegistry& state() const { return state_; }
+  void save(Archive& a, const std::string& prefix) const {
+    state_.save(a, prefix + "state/");
+    a.put(prefix + "step", step_);
+  }
+  void load(const Archive& a, const std::string& prefix) {
+    state_.load(a, prefix + "state/");
+    step_ = a.get<std::int64_t>(prefix + "step");
+    prepared_ = true;
+  }
 
   Health health() const {
     Health h;

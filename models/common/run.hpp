@@ -5,7 +5,13 @@
 //
 // The model needs step(), step_index(), time(), and for the watchdog health() -> Health (all finite?
 // the first bad particle and its position) and, to keep the last good state, state() -> const
-// StateRegistry& and set_step_index().
+// StateRegistry& and set_step_index(). Checkpoints (hooks.checkpoint) and restarts (hooks.resume)
+// need save(Archive&, prefix) and load(const Archive&, prefix): the model's complete state.
+//
+// A checkpoint holds the model, the driver's own record ("driver/..."), what the layers above add
+// (a run wrapper's time series: Checkpointing::add) and what the app adds when it stores it
+// (Checkpointing::write: its snapshot writer). A run resumed from it continues exactly where the
+// checkpoint was taken: no start sample, the watchdog's reference energy and the wall time carried.
 #pragma once
 
 #include <chrono>
@@ -14,9 +20,11 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/archive.hpp"
 #include "common/state.hpp"
 
 namespace polymech::models {
@@ -43,6 +51,15 @@ struct Watchdog {
   bool keep_last_good = false;
 };
 
+struct Checkpointing {
+  double every_seconds = 0.0;     // wall time between checkpoints (0: not by time)
+  std::int64_t every_steps = 0;   // also every n steps (0: not by steps; tests use it)
+  // records of the layers between the driver and the app (run wrappers), added to every checkpoint
+  std::vector<std::function<void(Archive&)>> add;
+  // stores the checkpoint of `step` (the app adds its own records first); none when empty
+  std::function<void(std::int64_t step, Archive&)> write;
+};
+
 struct RunHooks {
   std::function<void(std::int64_t step)> after_step;  // progress
   std::int64_t snapshot_every = 0;                    // 0: never
@@ -54,6 +71,10 @@ struct RunHooks {
   std::function<void(std::int64_t step)> sample;      // every sample_every steps and at the end
   std::function<bool()> stop;                         // asked after each sample: true ends the run
   Watchdog watchdog;
+  Checkpointing checkpoint;
+  // continue from this checkpoint: the driver loads the model from it (run wrappers load their own
+  // records); nullptr: start from the model's current state
+  const Archive* resume = nullptr;
 };
 
 struct RunStats {
@@ -65,6 +86,8 @@ struct RunStats {
   std::int64_t bad_step = -1;      // the step at which the watchdog found it
   Health health;                   // the first bad particle
   std::int64_t last_good_step = -1;  // the step of the last good state (snapshotted when kept)
+  std::int64_t checkpoints = 0;      // written during this run
+  std::int64_t restarts = 0;         // times the run was resumed from a checkpoint
 };
 
 namespace detail {
@@ -92,6 +115,34 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
   const Watchdog& wd = hooks.watchdog;
   StateRegistry::Backup last_good;
   double initial_energy = 0.0;  // the first positive energy the hook reports
+  double earlier_wall = 0.0;    // wall seconds of the run before the checkpoint it resumed from
+  if (hooks.resume) {
+    m.load(*hooks.resume, "model/");
+    initial_energy = hooks.resume->get<double>("driver/initial_energy");
+    earlier_wall = hooks.resume->get<double>("driver/wall_seconds");
+    s.restarts = hooks.resume->get<std::int64_t>("driver/restarts") + 1;
+  }
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const Checkpointing& ck = hooks.checkpoint;
+  double last_checkpoint = 0.0;
+  auto checkpoint_due = [&](std::int64_t k) {
+    if (!ck.write) return false;
+    if (ck.every_steps > 0 && k % ck.every_steps == 0) return true;
+    return ck.every_seconds > 0 && elapsed() - last_checkpoint >= ck.every_seconds;
+  };
+  auto write_checkpoint = [&](std::int64_t k) {
+    Kokkos::fence();
+    Archive a;
+    a.put("driver/initial_energy", initial_energy);
+    a.put("driver/wall_seconds", earlier_wall + elapsed());
+    a.put("driver/restarts", s.restarts);
+    a.put("driver/step", k);
+    m.save(a, "model/");
+    for (const auto& add : ck.add) add(a);
+    ck.write(k, a);
+    last_checkpoint = elapsed();
+    ++s.checkpoints;
+  };
   auto check_energy = [&]() {
     if (!wd.energy) return true;
     const double e = wd.energy();
@@ -119,7 +170,7 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
   };
 
   m.prepare();
-  if (hooks.sample && hooks.sample_at_start) hooks.sample(m.step_index());
+  if (hooks.sample && hooks.sample_at_start && !hooks.resume) hooks.sample(m.step_index());
   if (!check_energy()) s.diverged = true;
   keep();
   if (hooks.snapshot && hooks.snapshot_every > 0 && m.step_index() == 0) hooks.snapshot(0);
@@ -142,6 +193,7 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
     if (sample_due && hooks.stop) s.stopped = hooks.stop();
     if (hooks.snapshot && hooks.snapshot_every > 0 && (k % hooks.snapshot_every == 0 || s.stopped)) hooks.snapshot(k);
     if (hooks.after_step) hooks.after_step(k);
+    if (k < end && !s.stopped && checkpoint_due(k)) write_checkpoint(k);
   }
   Kokkos::fence();
   if (!s.diverged && wd.check_every > 0 && !healthy()) {
@@ -154,7 +206,7 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
     if (hooks.snapshot) hooks.snapshot(s.last_good_step);
   }
   s.steps = m.step_index();
-  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  s.wall_seconds = earlier_wall + elapsed();
   return s;
 }
 
@@ -186,5 +238,26 @@ struct EnergyLog {
     return have_reference && reference > 0 ? std::max(maximum - reference, reference - minimum) / reference : 0.0;
   }
 };
+
+inline void save_energy_log(const EnergyLog& e, Archive& a, const std::string& prefix) {
+  a.put_vector(prefix + "time", e.time);
+  a.put_vector(prefix + "total", e.total);
+  const double v[] = {e.reference_time, e.reference, e.minimum, e.maximum, e.last, e.have_reference ? 1.0 : 0.0};
+  a.put_bytes(prefix + "scalars", v, sizeof v);
+}
+inline EnergyLog load_energy_log(const Archive& a, const std::string& prefix) {
+  EnergyLog e;
+  e.time = a.get_vector<double>(prefix + "time");
+  e.total = a.get_vector<double>(prefix + "total");
+  const auto v = a.get_vector<double>(prefix + "scalars");
+  if (v.size() != 6) throw std::runtime_error("checkpoint: " + prefix + "scalars has " + std::to_string(v.size()) + " values");
+  e.reference_time = v[0];
+  e.reference = v[1];
+  e.minimum = v[2];
+  e.maximum = v[3];
+  e.last = v[4];
+  e.have_reference = v[5] != 0.0;
+  return e;
+}
 
 }  // namespace polymech::models

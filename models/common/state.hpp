@@ -1,7 +1,8 @@
 // The state of a model as a list of named Views: everything a step reads that it did not compute in
 // the same step (displacements, velocities, accelerations of velocity Verlet, bond and contact states,
 // material history). A model registers its Views once, after allocating them; the run driver's
-// watchdog keeps a copy of the last good state with it, and checkpoints write it.
+// watchdog keeps a copy of the last good state with it, and checkpoints (Archive, io/checkpoint.hpp)
+// write it and read it back.
 //
 // Views of effects that are off are empty and are not registered: a disabled effect costs nothing
 // here either.
@@ -11,6 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <cstring>
+#include <stdexcept>
+
+#include "common/archive.hpp"
 #include "core/types.hpp"
 
 namespace polymech::models {
@@ -37,6 +42,20 @@ class StateRegistry {
       auto copy = Kokkos::create_mirror(typename View::memory_space(), v);
       save.push_back([v, copy] { Kokkos::deep_copy(copy, v); });
       restore.push_back([v, copy] { Kokkos::deep_copy(v, copy); });
+    };
+    e.to_archive = [v](Archive& a, const std::string& key) {
+      auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
+      a.put_bytes(key, h.data(), h.span() * sizeof(typename View::value_type));
+    };
+    e.from_archive = [v](const Archive& a, const std::string& key) {
+      const auto& b = a.bytes(key);
+      auto h = Kokkos::create_mirror_view(v);
+      if (b.size() != h.span() * sizeof(typename View::value_type))
+        throw std::runtime_error("checkpoint: '" + key + "' has " + std::to_string(b.size()) + " bytes, this run needs " +
+                                 std::to_string(h.span() * sizeof(typename View::value_type)) +
+                                 " (written for another scene or size?)");
+      std::memcpy(static_cast<void*>(h.data()), b.data(), b.size());
+      Kokkos::deep_copy(v, h);
     };
     entries_.push_back(std::move(e));
   }
@@ -68,11 +87,23 @@ class StateRegistry {
     Kokkos::fence();
   }
 
+  // Every View's bytes under "<prefix><name>" (a checkpoint), and back. Reading checks that every
+  // View is there with the size this model has.
+  void save(Archive& a, const std::string& prefix = "state/") const {
+    for (const auto& e : entries_) e.to_archive(a, prefix + e.name);
+  }
+  void load(const Archive& a, const std::string& prefix = "state/") const {
+    for (const auto& e : entries_) e.from_archive(a, prefix + e.name);
+    Kokkos::fence();
+  }
+
  private:
   struct Entry {
     std::string name;
     std::size_t bytes = 0;
     std::function<void(std::vector<std::function<void()>>&, std::vector<std::function<void()>>&)> make_backup;
+    std::function<void(Archive&, const std::string&)> to_archive;
+    std::function<void(const Archive&, const std::string&)> from_archive;
   };
   std::vector<Entry> entries_;
 };

@@ -176,6 +176,25 @@ class MpsElastic {
   const ContactHistory& contact_history() const { return contact_history_; }
   const models::StateRegistry& state() const { return state_; }
 
+  // The complete state for a checkpoint (fields, crack contact states, step, probe and contact
+  // histories), and back: the run continues bit for bit (models/common/run.hpp).
+  void save(models::Archive& a, const std::string& prefix) {
+    state_.save(a, prefix + "state/");
+    a.put(prefix + "step", step_);
+    probes_.save(a, prefix + "probes/");
+    const std::vector<std::vector<double>> h = {contact_history_.times, contact_history_.separation, contact_history_.stick,
+                                                contact_history_.slip};
+    a.put_columns(prefix + "contact_history", h);
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    state_.load(a, prefix + "state/");
+    step_ = a.get<std::int64_t>(prefix + "step");
+    probes_.load(a, prefix + "probes/");
+    const auto h = a.get_columns<double>(prefix + "contact_history");
+    if (h.size() != 4) throw std::runtime_error("checkpoint: contact_history needs 4 columns");
+    contact_history_ = {h[0], h[1], h[2], h[3]};
+  }
+
   // Kinetic and strain energy now. The strain term uses e from the start of the last step.
   mps::ElasticEnergy energy() const {
     return rotation_ ? mps::elastic_energy<T, true>(family_, f_, params_)

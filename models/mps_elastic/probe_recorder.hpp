@@ -90,6 +90,8 @@ class ProbeRecorder {
 
   // Everything recorded so far (copies pending samples from the device first).
   const ProbeHistory& history() { return buffer_.history(); }
+  void save(models::Archive& a, const std::string& prefix) { buffer_.save(a, prefix); }
+  void load(const models::Archive& a, const std::string& prefix) { buffer_.load(a, prefix); }
 
  private:
   mps::ProbeStencil<T> stencil_;

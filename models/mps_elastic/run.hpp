@@ -34,6 +34,8 @@ template <class T>
 RunStats run(MpsElastic<T>& m, std::int64_t steps, RunHooks hooks = {}) {
   RunStats s;
   s.energy.reference_time = m.excitation_end_time();
+  if (hooks.resume) s.energy = models::load_energy_log(*hooks.resume, "run/energy/");
+  hooks.checkpoint.add.push_back([&s](models::Archive& a) { models::save_energy_log(s.energy, a, "run/energy/"); });
   if (hooks.sample_every <= 0) hooks.sample_every = 100;
   hooks.sample = [&s, &m, user = hooks.sample](std::int64_t k) {
     s.energy.add(m.time(), m.energy().total());

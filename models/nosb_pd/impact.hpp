@@ -201,6 +201,8 @@ ImpactState analyse_impact(const Impact<T, D>& m) {
 template <class T, int D>
 RunStats run_impact(Impact<T, D>& m, std::int64_t steps, RunHooks hooks, bool stop_after_perforation = true) {
   int free_samples = 0;
+  if (hooks.resume) free_samples = hooks.resume->get<int>("impact/free_samples");
+  hooks.checkpoint.add.push_back([&free_samples](models::Archive& a) { a.put("impact/free_samples", free_samples); });
   if (stop_after_perforation)
     hooks.stop = [&] {
       free_samples = projectile_free(m) ? free_samples + 1 : 0;

@@ -149,6 +149,31 @@ class NosbPd {
   int verlet_builds() const { return verlet_ ? verlet_->builds() : 0; }
   const models::StateRegistry& state() const { return state_; }
 
+  // The complete state for a checkpoint (fields, bonds, plastic and control-force history, step, the
+  // short-range list's build positions), and back: the run continues bit for bit.
+  void save(models::Archive& a, const std::string& prefix) {
+    state_.save(a, prefix + "state/");
+    a.put(prefix + "step", step_);
+    if (verlet_ && verlet_->builds() > 0) {
+      a.put(prefix + "short_range_builds", verlet_->builds());
+      models::StateRegistry r;
+      r.add("x_at_build", verlet_->positions_at_build());
+      r.save(a, prefix + "short_range/");
+    }
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    state_.load(a, prefix + "state/");
+    step_ = a.get<std::int64_t>(prefix + "step");
+    prepared_ = true;  // the accelerations of this state are part of it
+    if (verlet_ && a.has(prefix + "short_range_builds")) {
+      VecView<T, D> x("polymech::nosb_pd::short_range_x_at_build", static_cast<std::size_t>(n_));
+      models::StateRegistry r;
+      r.add("x_at_build", x);
+      r.load(a, prefix + "short_range/");
+      verlet_->restore(x, a.get<int>(prefix + "short_range_builds"));
+    }
+  }
+
   // Energies of the particles (contact and projectile terms are an impact's, impact.hpp).
   Energies energy() const {
     const auto e = std::visit(

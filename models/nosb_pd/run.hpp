@@ -63,7 +63,15 @@ Sample take_sample(const Model& m) {
 template <class Model>
 RunStats run(Model& m, std::int64_t steps, RunHooks hooks = {}, double energy_limit = 0.0) {
   RunStats s;
-  m.prepare();
+  if (hooks.resume) {  // the samples so far (the model itself is loaded by the driver)
+    s.samples = hooks.resume->get_vector<Sample>("run/samples");
+    s.initial_energy = hooks.resume->get<double>("run/initial_energy");
+  }
+  hooks.checkpoint.add.push_back([&s](models::Archive& a) {
+    a.put_vector("run/samples", s.samples);
+    a.put("run/initial_energy", s.initial_energy);
+  });
+  if (!hooks.resume) m.prepare();
   if (hooks.sample_every <= 0) hooks.sample_every = 50;
   hooks.sample_at_start = true;
   hooks.sample = [&s, &m, user = hooks.sample](std::int64_t k) {
