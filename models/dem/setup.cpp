@@ -1,0 +1,63 @@
+#include "dem/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "dem/hertz_mindlin.hpp"
+
+namespace polymech::dem {
+
+namespace {
+std::string g(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", x);
+  return b;
+}
+}  // namespace
+
+std::string TimeStepLimit::describe() const {
+  std::string s = g(limit) + " s (0.2 x the Rayleigh time: " + g(rayleigh) + " s";
+  if (hertz > 0) s += "; the Hertz contact time at " + g(approach_speed) + " m/s over 20 steps: " + g(hertz) + " s";
+  return s + ")";
+}
+
+TimeStepLimit time_step_limit(const Config& c) {
+  TimeStepLimit t;
+  if (c.spheres.empty()) return t;
+  double r_min = c.spheres[0].radius, v_max = 0.0;
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = c.spheres[0].position[k];
+  for (const auto& s : c.spheres) {
+    r_min = std::min(r_min, s.radius);
+    double v2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      v2 += s.velocity[k] * s.velocity[k];
+      lo[k] = std::min(lo[k], s.position[k]);
+      hi[k] = std::max(hi[k], s.position[k]);
+    }
+    v_max = std::max(v_max, std::sqrt(v2));
+  }
+  const double& E = c.particle.young;
+  const double& nu = c.particle.poisson;
+  t.rayleigh = 0.2 * rayleigh_time_step(r_min, c.particle.density, E, nu);
+  t.limit = t.rayleigh;
+  // the approach speed: two spheres at the largest speed head on, plus a free fall across the spheres' extent
+  double g2 = 0.0, extent2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    g2 += c.gravity[k] * c.gravity[k];
+    extent2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+  }
+  t.approach_speed = c.max_speed > 0 ? c.max_speed : 2.0 * v_max + std::sqrt(2.0 * std::sqrt(g2) * std::sqrt(extent2));
+  if (t.approach_speed > 0) {
+    const double m = c.particle.density * 4.0 / 3.0 * kPi * r_min * r_min * r_min;
+    const double pp = hertz_contact_time(0.5 * m, 0.5 * r_min, effective_modulus(E, nu, E, nu), t.approach_speed);
+    const double pw = hertz_contact_time(m, r_min, effective_modulus(E, nu, c.wall.young, c.wall.poisson),
+                                         t.approach_speed);
+    t.hertz = std::min(pp, pw) / 20.0;
+    t.limit = std::min(t.limit, t.hertz);
+  }
+  return t;
+}
+
+}  // namespace polymech::dem
