@@ -208,4 +208,21 @@ CostEstimate helmholtz_cost(double dofs, double elements, int order, bool single
   return c;
 }
 
+// - DEM: section "DEM" of docs/PERFORMANCE.md: the Chung & Ooi impacts of apps/dem_benchmark (one or
+//   two spheres) run at about 2e5 steps/s on one core, a rate set by the per-step kernel launches and
+//   the host copies of the measurement, not by the spheres; memory: about 40 reals per sphere.
+CostEstimate dem_cost(double spheres, double steps) {
+  CostEstimate c;
+  c.method = "DEM (Hertz-Mindlin spheres)";
+  c.item_name = "spheres";
+  c.items = spheres;
+  c.max_items = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+  c.steps = steps;
+  c.step_name = "steps";
+  c.bytes = process_bytes + 1.2 * spheres * 40.0 * 8.0;
+  c.seconds = steps * std::max(1.0, spheres / 1000.0) / 2e5;
+  c.rate = "2e5 steps/s for a few spheres, docs/PERFORMANCE.md 'DEM' (dem_benchmark, 1 thread)";
+  return c;
+}
+
 }  // namespace polymech::io

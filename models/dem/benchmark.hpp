@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "dem/dem.hpp"
+#include "dem/impacts.hpp"
 
 namespace polymech::dem {
 
@@ -75,72 +76,6 @@ inline ImpactMeasure run_impact(const Config& c, double wall_z = 0.0, std::int64
 inline double rebound_angle_deg(const ImpactMeasure& m, double radius) {
   const double vcx = m.v_after[0] - radius * m.omega_after[1];
   return std::atan2(vcx, m.v_after[2]) * 180.0 / kPi;
-}
-
-// The benchmark cases (Chung & Ooi 2011, Granular Matter 13:643-656; see docs/VALIDATION.md for the
-// values and where each comes from). dt_steps: steps per Hertz contact time.
-struct Case {
-  Material particle, wall;
-  double radius = 0, speed = 0;
-};
-inline Case chung_ooi_test1_glass() { return {{4.8e10, 0.20, 2800}, {}, 0.010, 10.0}; }
-inline Case chung_ooi_test2_aluminium() { return {{7.0e10, 0.33, 2699}, {0.0, 0.0, 0.0}, 0.10, 0.2}; }
-inline Case chung_ooi_test2_magnesium() { return {{4.0e10, 0.35, 1800}, {0.0, 0.0, 0.0}, 0.10, 0.2}; }
-inline Case chung_ooi_test4_alumina() { return {{3.8e11, 0.23, 4000}, {0.0, 0.0, 0.0}, 0.0025, 3.9}; }
-
-inline double sphere_mass(const Case& k) { return k.particle.density * 4.0 / 3.0 * kPi * std::pow(k.radius, 3); }
-
-// Test 1: two identical spheres head on along x, each at `speed`, a small gap apart.
-inline Config two_spheres(const Case& k, double steps_per_contact) {
-  Config c;
-  c.particle = k.particle;
-  const double gap = 1e-3 * k.radius;
-  SphereInit a, b;
-  a.radius = b.radius = k.radius;
-  a.position = {-k.radius - gap, 0, 0};
-  b.position = {k.radius + gap, 0, 0};
-  a.velocity = {k.speed, 0, 0};
-  b.velocity = {-k.speed, 0, 0};
-  c.spheres = {a, b};
-  const double m = sphere_mass(k);
-  c.dt = hertz_contact_time(0.5 * m, 0.5 * k.radius, effective_modulus(k.particle.young, k.particle.poisson,
-                                                                         k.particle.young, k.particle.poisson),
-                            2 * k.speed) / steps_per_contact;
-  return c;
-}
-
-// Test 2-4: a sphere onto the plane z = 0 (or a meshed wall there) at `speed`, `angle_deg` from the normal.
-inline Config sphere_on_wall(const Case& k, double steps_per_contact, double angle_deg = 0.0, bool meshed = false) {
-  Config c;
-  c.particle = k.particle;
-  c.wall = k.wall;
-  const double th = angle_deg * kPi / 180.0;
-  SphereInit s;
-  s.radius = k.radius;
-  s.position = {0, 0, k.radius * 1.0005};
-  s.velocity = {k.speed * std::sin(th), 0, -k.speed * std::cos(th)};
-  c.spheres = {s};
-  if (meshed) {  // 4 x 4 quadrilaterals of side r, centred under the sphere
-    const int n = 4;
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        for (double x : {(i - n / 2) * k.radius, (j - n / 2) * k.radius, 0.0}) c.surface.nodes.push_back(x);
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const std::int64_t n0 = j * (n + 1) + i;
-        c.surface.facet_sizes.push_back(4);
-        for (std::int64_t id : {n0, n0 + 1, n0 + n + 2, n0 + n + 1}) c.surface.facet_nodes.push_back(id);
-      }
-  } else {
-    PlaneInit p;
-    p.normal = {0, 0, 1};
-    c.planes = {p};
-  }
-  const double vn = k.speed * std::cos(th);
-  c.dt = hertz_contact_time(sphere_mass(k), k.radius,
-                            effective_modulus(k.particle.young, k.particle.poisson, k.wall.young, k.wall.poisson),
-                            vn > 0 ? vn : k.speed) / steps_per_contact;
-  return c;
 }
 
 }  // namespace polymech::dem

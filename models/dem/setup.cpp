@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "dem/hertz_mindlin.hpp"
+#include "dem/impacts.hpp"
 
 namespace polymech::dem {
 
@@ -58,6 +59,67 @@ TimeStepLimit time_step_limit(const Config& c) {
     t.limit = std::min(t.limit, t.hertz);
   }
   return t;
+}
+
+}  // namespace polymech::dem
+
+namespace polymech::dem {
+
+double sphere_mass(const Case& k) { return k.particle.density * 4.0 / 3.0 * kPi * std::pow(k.radius, 3); }
+
+Config two_spheres(const Case& k, double steps_per_contact) {
+  Config c;
+  c.particle = k.particle;
+  const double gap = 1e-3 * k.radius;
+  SphereInit a, b;
+  a.radius = b.radius = k.radius;
+  a.position = {-k.radius - gap, 0, 0};
+  b.position = {k.radius + gap, 0, 0};
+  a.velocity = {k.speed, 0, 0};
+  b.velocity = {-k.speed, 0, 0};
+  c.spheres = {a, b};
+  const double m = sphere_mass(k);
+  const double e_star = effective_modulus(k.particle.young, k.particle.poisson, k.particle.young, k.particle.poisson);
+  c.dt = hertz_contact_time(0.5 * m, 0.5 * k.radius, e_star, 2 * k.speed) / steps_per_contact;
+  return c;
+}
+
+Config sphere_on_wall(const Case& k, double steps_per_contact, double angle_deg, bool meshed) {
+  Config c;
+  c.particle = k.particle;
+  c.wall = k.wall;
+  const double th = angle_deg * kPi / 180.0;
+  SphereInit s;
+  s.radius = k.radius;
+  s.position = {0, 0, k.radius * 1.0005};
+  s.velocity = {k.speed * std::sin(th), 0, -k.speed * std::cos(th)};
+  c.spheres = {s};
+  if (meshed) {
+    const int n = 4;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        c.surface.nodes.push_back((i - n / 2) * k.radius);
+        c.surface.nodes.push_back((j - n / 2) * k.radius);
+        c.surface.nodes.push_back(0.0);
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::int64_t n0 = j * (n + 1) + i;
+        c.surface.facet_sizes.push_back(4);
+        c.surface.facet_nodes.push_back(n0);
+        c.surface.facet_nodes.push_back(n0 + 1);
+        c.surface.facet_nodes.push_back(n0 + n + 2);
+        c.surface.facet_nodes.push_back(n0 + n + 1);
+      }
+  } else {
+    PlaneInit p;
+    p.normal = {0, 0, 1};
+    c.planes = {p};
+  }
+  const double vn = k.speed * std::cos(th);
+  const double e_star = effective_modulus(k.particle.young, k.particle.poisson, k.wall.young, k.wall.poisson);
+  c.dt = hertz_contact_time(sphere_mass(k), k.radius, e_star, vn > 0 ? vn : k.speed) / steps_per_contact;
+  return c;
 }
 
 }  // namespace polymech::dem
