@@ -208,9 +208,9 @@ CostEstimate helmholtz_cost(double dofs, double elements, int order, bool single
   return c;
 }
 
-// - DEM: section "DEM" of docs/PERFORMANCE.md: the Chung & Ooi impacts of apps/dem_benchmark (one or
-//   two spheres) run at about 2e5 steps/s on one core, a rate set by the per-step kernel launches and
-//   the host copies of the measurement, not by the spheres; memory: about 40 reals per sphere.
+// - DEM: section "DEM (stage 1)" of docs/PERFORMANCE.md, 1 thread: the Chung & Ooi impacts of
+//   dem_benchmark (one or two spheres, a host copy per step for the measurement) at 1.5e5 steps/s; the
+//   96-sphere pour of tests/dem at 2.3e6 sphere-steps/s. Memory: about 40 reals per sphere.
 CostEstimate dem_cost(double spheres, double steps) {
   CostEstimate c;
   c.method = "DEM (Hertz-Mindlin spheres)";
@@ -220,8 +220,8 @@ CostEstimate dem_cost(double spheres, double steps) {
   c.steps = steps;
   c.step_name = "steps";
   c.bytes = process_bytes + 1.2 * spheres * 40.0 * 8.0;
-  c.seconds = steps * std::max(1.0, spheres / 1000.0) / 2e5;
-  c.rate = "2e5 steps/s for a few spheres, docs/PERFORMANCE.md 'DEM' (dem_benchmark, 1 thread)";
+  c.seconds = steps * std::max(1.0 / 1.5e5, spheres / 2.3e6);
+  c.rate = "1.5e5 steps/s (a few spheres) or 2.3e6 sphere-steps/s, docs/PERFORMANCE.md 'DEM (stage 1)', 1 thread";
   return c;
 }
 

@@ -6,6 +6,7 @@
 // [[input, measured], ...], test4_rebound_angles [[incidence_deg, rebound_deg], ...]; and test4.csv.
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -19,6 +20,8 @@ namespace pm = polymech;
 namespace dm = polymech::dem;
 
 namespace {
+
+std::int64_t total_steps = 0;  // over every run, for the rate in summary.json
 
 // Hertz theory of the scene's impact: m*, R*, E*, approach speed.
 void hertz_of(const pm::io::DemScene& s, double& m_star, double& r_star, double& e_star, double& v) {
@@ -41,6 +44,7 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
   const std::string prefix = "test" + std::to_string(s.test) + (s.target == "mesh" ? "_mesh_" : "_");
   if (s.test == 1 || s.test == 2) {
     const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, s.restitutions[0]));
+    total_steps += got.steps;
     double m_star, r_star, e_star, v;
     hertz_of(s, m_star, r_star, e_star, v);
     const double f = dm::hertz_max_force(m_star, r_star, e_star, v);
@@ -65,6 +69,7 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
     nlohmann::json rows = nlohmann::json::array();
     for (double e : s.restitutions) {
       const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, e));
+      total_steps += got.steps;
       rows.push_back({e, got.normal_restitution});
       if (!quiet) std::printf("test 3: restitution %.2f -> measured %.4f\n", e, got.normal_restitution);
     }
@@ -74,6 +79,7 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
     std::vector<double> in, out, vt, w;
     for (double angle : s.angles) {
       const auto got = dm::run_impact(pm::io::dem_impact_config(s, angle, s.restitutions[0]));
+      total_steps += got.steps;
       const double rebound = dm::rebound_angle_deg(got, s.impact.radius);
       rows.push_back({angle, rebound});
       in.push_back(angle);
@@ -118,7 +124,10 @@ int main(int argc, char** argv) {
       j["scenes"].push_back(s.header.file.string());
       run_scene(s, j, opt.quiet);
     }
-    j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    j["wall_seconds"] = wall;
+    j["steps"] = total_steps;
+    j["steps_per_second"] = static_cast<double>(total_steps) / wall;
     pm::io::write_json(opt.out / "summary.json", j);
     std::printf("results in %s\n", opt.out.c_str());
     return 0;

@@ -79,8 +79,8 @@ TEST(ChungOoi, Test2SphereOnRigidPlaneMatchesHertz) {
 TEST(ChungOoi, Test2MeshedWallGivesThePlanesRebound) {
   const auto k = dm::chung_ooi_test2_aluminium();
   for (double angle : {0.0, 30.0}) {
-    auto plane_cfg = dm::sphere_on_wall(k, 400, angle);
-    auto mesh_cfg = dm::sphere_on_wall(k, 400, angle, true);
+    auto plane_cfg = dm::sphere_on_wall(k, 200, angle);
+    auto mesh_cfg = dm::sphere_on_wall(k, 200, angle, true);
     for (auto* c : {&plane_cfg, &mesh_cfg}) {
       c->friction = 0.3;
       c->restitution = 0.7;
@@ -101,7 +101,7 @@ TEST(ChungOoi, Test3RestitutionMatchesTheDampingModel) {
   const auto k = dm::chung_ooi_test2_aluminium();
   const double e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, 0.0, 0.0);
   for (double e : {0.3, 0.5, 0.7, 0.9}) {
-    auto c = dm::sphere_on_wall(k, 400);
+    auto c = dm::sphere_on_wall(k, 200);
     c.restitution = e;
     c.effects = pm::EffectSet::resolve({"damping"}, dm::effect_table());
     const auto got = dm::run_impact(c);
@@ -116,7 +116,7 @@ TEST(ChungOoi, Test4ReboundAnglesFollowTheSlidingLimitAndTurnNegativeInStickSlip
   const auto k = dm::chung_ooi_test4_alumina();
   const double mu = 0.092;
   for (double angle : {5.0, 10.0, 20.0, 40.0, 60.0, 80.0}) {
-    auto c = dm::sphere_on_wall(k, 400, angle);
+    auto c = dm::sphere_on_wall(k, 200, angle);
     c.friction = mu;
     c.restitution = 0.98;
     c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
