@@ -59,10 +59,8 @@ class Dem {
     const double mu = friction_ ? cfg_.friction : 0.0;
     const auto& p = cfg_.particle;
     const auto& w = cfg_.wall;
-    pp_ = {T(effective_modulus(p.young, p.poisson, p.young, p.poisson)),
-           T(effective_shear_modulus(p.young, p.poisson, p.young, p.poisson)), T(beta), T(mu)};
-    pw_ = {T(effective_modulus(p.young, p.poisson, w.young, w.poisson)),
-           T(effective_shear_modulus(p.young, p.poisson, w.young, w.poisson)), T(beta), T(mu)};
+    pp_ = law(p, p, beta, mu);
+    pw_ = law(p, w, beta, mu);
     allocate_spheres();
     allocate_planes();
     if (surfaces_) allocate_surface();
@@ -84,7 +82,9 @@ class Dem {
   }
   void compute_forces() {
     current_positions(s_);
-    body_forces(s_, Vec3<T>{{T(cfg_.gravity[0]), T(cfg_.gravity[1]), T(cfg_.gravity[2])}});
+    Vec3<T> g;  // named, not a braced list passed to the call (nvcc 11.8, docs/DEVELOPING.md)
+    for (int k = 0; k < 3; ++k) g[k] = T(cfg_.gravity[k]);
+    body_forces(s_, g);
   }
   void observe() {}
   void add_contact_forces() {
@@ -164,6 +164,14 @@ class Dem {
     double r = max_radius(c);
     for (const auto& s : c.spheres) r = std::min(r, s.radius);
     return 0.2 * r;
+  }
+  static HertzMindlin<T> law(const Material& a, const Material& b, double beta, double mu) {
+    HertzMindlin<T> h;
+    h.e_star = T(effective_modulus(a.young, a.poisson, b.young, b.poisson));
+    h.g_star = T(effective_shear_modulus(a.young, a.poisson, b.young, b.poisson));
+    h.beta = T(beta);
+    h.mu = T(mu);
+    return h;
   }
   static void validate(const Config& c) {
     if (c.spheres.empty()) throw std::invalid_argument("dem: no spheres");
