@@ -98,22 +98,24 @@ TEST(ChungOoi, Test2MeshedWallGivesThePlanesRebound) {
 }
 
 TEST(ChungOoi, Test3RestitutionMatchesTheDampingModel) {
-  const auto k = dm::chung_ooi_test2_aluminium();
-  const double e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, 0.0, 0.0);
-  for (double e : {0.3, 0.5, 0.7, 0.9}) {
-    auto c = dm::sphere_on_wall(k, 200);
-    c.restitution = e;
-    c.effects = pm::EffectSet::resolve({"damping"}, dm::effect_table());
-    const auto got = dm::run_impact(c);
-    const double predicted = damped_hertz_restitution(dm::sphere_mass(k), k.radius, e_star, dm::damping_ratio(e), k.speed);
-    EXPECT_NEAR(got.normal_restitution, predicted, 0.005 * predicted) << "e = " << e;
-    // the damping ratio of eq. (17) is calibrated on a linear spring: the Hertz restitution is near, not equal
-    EXPECT_NEAR(got.normal_restitution, e, 0.1) << "e = " << e;
+  for (const auto& k : {dm::chung_ooi_alumina(), dm::chung_ooi_cast_iron()}) {
+    const double e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, 0.0, 0.0);
+    for (double e : {0.2, 0.4, 0.6, 0.8}) {
+      auto c = dm::sphere_on_wall(k, 200);
+      c.restitution = e;
+      c.effects = pm::EffectSet::resolve({"damping"}, dm::effect_table());
+      const auto got = dm::run_impact(c);
+      const double predicted =
+          damped_hertz_restitution(dm::sphere_mass(k), k.radius, e_star, dm::damping_ratio(e), k.speed);
+      EXPECT_NEAR(got.normal_restitution, predicted, 0.005 * predicted) << "e = " << e;
+      // the damping ratio of eq. (17) is calibrated on a linear spring: the Hertz restitution is near, not equal
+      EXPECT_NEAR(got.normal_restitution, e, 0.13) << "e = " << e;
+    }
   }
 }
 
 TEST(ChungOoi, Test4ReboundAnglesFollowTheSlidingLimitAndTurnNegativeInStickSlip) {
-  const auto k = dm::chung_ooi_test4_alumina();
+  const auto k = dm::chung_ooi_alumina();
   const double mu = 0.092;
   for (double angle : {5.0, 10.0, 20.0, 40.0, 60.0, 80.0}) {
     auto c = dm::sphere_on_wall(k, 200, angle);

@@ -26,7 +26,7 @@ effects = []
 radius = 0.10
 density = 2699.0
 youngs_modulus = 7.0e10
-poisson_ratio = 0.33
+poisson_ratio = 0.30
 
 [wall]
 rigid = true
