@@ -55,7 +55,7 @@ class Dem {
     if (cfg_.dt <= 0) cfg_.dt = cfg_.dt_safety * limit_.limit;
     if (cfg_.dt > limit_.limit)
       throw std::invalid_argument("time step " + std::to_string(cfg_.dt) + " s exceeds the limit " + limit_.describe());
-    const double beta = damping_ ? damping_ratio(cfg_.restitution) : 0.0;
+    const double beta = damping_ ? hertz_damping_ratio(cfg_.restitution) : 0.0;  // calibrated on the Hertz law
     const double mu = friction_ ? cfg_.friction : 0.0;
     const auto& p = cfg_.particle;
     const auto& w = cfg_.wall;
