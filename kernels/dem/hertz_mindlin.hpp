@@ -7,7 +7,9 @@
 //   F_n = (4/3 E* a) delta  - 2 sqrt(5/6) beta sqrt(S_n m*) v_n        eq. (12): k_n h + gamma_n v_n
 //   F_t = -S_t xi           + 2 sqrt(5/6) beta sqrt(S_t m*) v_t        eq. (13): k_t sigma + gamma_t v_t
 //   |F_t| <= mu F_n (eq. (14)): on slip F_t is scaled to mu F_n and the spring xi to -F_t / S_t.
-//   beta = ln e / sqrt(ln^2 e + pi^2) (<= 0): eq. (17)'s gamma = -zeta m* with zeta = -2 sqrt(5/6) beta sqrt(S / m*).
+//   beta (<= 0) from the restitution e: eq. (17)'s gamma = -zeta m* with zeta = -2 sqrt(5/6) beta sqrt(S / m*);
+//   damping_ratio() is the linear spring's ln e / sqrt(ln^2 e + pi^2), the model uses the Hertz-calibrated
+//   dem::hertz_damping_ratio (models/dem/setup.hpp).
 //
 // Conventions: n is the unit normal pointing from the partner (sphere j, plane, facet) to sphere i,
 // delta > 0 the overlap, v_rel the velocity of i's contact point minus the partner's; v_n = v_rel . n
