@@ -208,4 +208,21 @@ CostEstimate helmholtz_cost(double dofs, double elements, int order, bool single
   return c;
 }
 
+// - DEM: section "DEM (stage 1)" of docs/PERFORMANCE.md, 1 thread: the Chung & Ooi impacts of
+//   dem_benchmark (one or two spheres, a host copy per step for the measurement) at 1.5e5 steps/s; the
+//   96-sphere pour of tests/dem at 2.3e6 sphere-steps/s. Memory: about 40 reals per sphere.
+CostEstimate dem_cost(double spheres, double steps) {
+  CostEstimate c;
+  c.method = "DEM (Hertz-Mindlin spheres)";
+  c.item_name = "spheres";
+  c.items = spheres;
+  c.max_items = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+  c.steps = steps;
+  c.step_name = "steps";
+  c.bytes = process_bytes + 1.2 * spheres * 40.0 * 8.0;
+  c.seconds = steps * std::max(1.0 / 1.5e5, spheres / 2.3e6);
+  c.rate = "1.5e5 steps/s (a few spheres) or 2.3e6 sphere-steps/s, docs/PERFORMANCE.md 'DEM (stage 1)', 1 thread";
+  return c;
+}
+
 }  // namespace polymech::io

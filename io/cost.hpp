@@ -49,5 +49,7 @@ CostEstimate mps_cost(double particles, double influence_radius, bool rotation, 
 CostEstimate pd_cost(double particles, double bonds_per_particle, bool single, double steps);
 // Matrix-free Helmholtz: DoFs, elements, order, and the solver's iteration limit.
 CostEstimate helmholtz_cost(double dofs, double elements, int order, bool single, int max_iterations);
+// DEM spheres: spheres and steps (over all runs of a scene).
+CostEstimate dem_cost(double spheres, double steps);
 
 }  // namespace polymech::io

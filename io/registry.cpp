@@ -1,5 +1,6 @@
 #include "io/registry.hpp"
 
+#include "io/dem_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
@@ -32,6 +33,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_helmholtz_scene(f); },
        [](const std::filesystem::path&) { return std::string("helmholtz"); },
        [](const std::filesystem::path& f) { return load_helmholtz_scene(f).cost; }},
+      {"dem", "DEM spheres, Hertz-Mindlin contact against planes and FE surfaces (seed 002 paper 2)", {"dem_benchmark"},
+       [](const std::filesystem::path& f) { load_dem_scene(f); },
+       [](const std::filesystem::path&) { return std::string("dem_benchmark"); },
+       [](const std::filesystem::path& f) { return load_dem_scene(f).cost; }},
   };
   return kinds;
 }

@@ -56,9 +56,11 @@ template <class T, int D, int N>
 class ContactPairs {
  public:
   // radius: the contact range of the narrow phase (a sphere's radius plus a facet's extent, say);
-  // skin: the Verlet skin.
-  ContactPairs(T radius, T skin, neighbors::ListKind kind, std::string label = "polymech::contact::pairs")
-      : radius_(radius), skin_(skin), kind_(kind), label_(std::move(label)) {}
+  // skin: the Verlet skin. keep_history = false: the list alone (history() stays empty: a model whose
+  // contacts have no history, e.g. DEM without friction, allocates none).
+  ContactPairs(T radius, T skin, neighbors::ListKind kind, std::string label = "polymech::contact::pairs",
+               bool keep_history = true)
+      : radius_(radius), skin_(skin), kind_(kind), label_(std::move(label)), keep_history_(keep_history) {}
 
   // One set: pairs among the points x. Returns true when the list was rebuilt.
   bool update(const VecView<T, D>& x) { return update_impl(x, x, false); }
@@ -88,8 +90,8 @@ class ContactPairs {
       search_.build_between(queries, points, radius_ + skin_, lists_[next]);
     else
       search_.build(queries, radius_ + skin_, kind_, lists_[next]);
-    history_[next].resize(static_cast<std::size_t>(lists_[next].num_pairs), label_ + "_history");
-    if (builds_ > 0) carry_history(lists_[current_], history_[current_], lists_[next], history_[next]);
+    if (keep_history_) history_[next].resize(static_cast<std::size_t>(lists_[next].num_pairs), label_ + "_history");
+    if (keep_history_ && builds_ > 0) carry_history(lists_[current_], history_[current_], lists_[next], history_[next]);
     current_ = next;
     ++builds_;
     return true;
@@ -98,6 +100,7 @@ class ContactPairs {
   T radius_, skin_;
   neighbors::ListKind kind_;
   std::string label_;
+  bool keep_history_ = true;
   neighbors::NeighborSearch<T, D> search_;
   neighbors::NeighborList lists_[2];
   PairHistory<T, N> history_[2];

@@ -3,7 +3,9 @@
 // cloud, 200 MPS steps of a plate with a clapping and slipping crack, energies), the first writes them
 // to a file, the second reads that file and compares. Neighbour lists must be identical (fixed order
 // within rows); the MPS fields are per-particle gathers, but n0 (a mean, eq. (2)) is a parallel
-// reduction, so fields and energies agree to round-off.
+// reduction, so fields and energies agree to round-off. DEM spheres (sphere-sphere and sphere-facet
+// contact with friction, 300 steps) have no reduction but the exact max of the Verlet-skin check: their
+// state must be bitwise the same.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "dem/benchmark.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 #include "neighbors/neighbor_search.hpp"
 
@@ -24,7 +27,41 @@ struct Results {
   std::vector<double> neighbors;  // the CSR list of a random cloud, as numbers
   std::vector<double> fields;     // u, v, theta after the steps
   std::vector<double> reductions; // energies, contact counts
+  std::vector<double> dem;        // DEM spheres: x, v, omega after the steps
 };
+
+// 27 spheres with random velocities onto a meshed wall (friction, damping, fe_surfaces).
+std::vector<double> dem_spheres() {
+  namespace dm = polymech::dem;
+  auto c = dm::sphere_on_wall(dm::chung_ooi_alumina(), 50, 0.0, true);
+  const double r = 0.0025;
+  std::mt19937 g(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  c.spheres.clear();
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        dm::SphereInit s;
+        s.radius = r * (1 + 0.1 * u(g));
+        s.position = {(i - 1) * 2.1 * r, (j - 1) * 2.1 * r, 1.1 * r + k * 2.1 * r};
+        s.velocity = {u(g), u(g), u(g) - 1.0};
+        c.spheres.push_back(s);
+      }
+  c.friction = 0.3;
+  c.restitution = 0.7;
+  c.dt = 0;
+  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces"}, dm::effect_table());
+  dm::Dem<double> m(c);
+  for (int s = 0; s < 300; ++s) m.step();
+  std::vector<double> out;
+  for (pm::Index i = 0; i < 27; ++i) {
+    const auto st = m.sphere(i);
+    out.insert(out.end(), st.x, st.x + 3);
+    out.insert(out.end(), st.v, st.v + 3);
+    out.insert(out.end(), st.omega, st.omega + 3);
+  }
+  return out;
+}
 
 Results compute() {
   Results r;
@@ -69,12 +106,13 @@ Results compute() {
   const auto e = m.energy();
   const auto n = m.crack().counts();
   r.reductions = {e.kinetic, e.strain, double(n.separation), double(n.stick), double(n.slip)};
+  r.dem = dem_spheres();
   return r;
 }
 
 void write(const std::string& path, const Results& r) {
   std::ofstream o(path, std::ios::binary);
-  for (const auto* v : {&r.neighbors, &r.fields, &r.reductions}) {
+  for (const auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem}) {
     const std::uint64_t n = v->size();
     o.write(reinterpret_cast<const char*>(&n), sizeof n);
     o.write(reinterpret_cast<const char*>(v->data()), static_cast<std::streamsize>(n * sizeof(double)));
@@ -84,7 +122,7 @@ void write(const std::string& path, const Results& r) {
 bool read(const std::string& path, Results& r) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
-  for (auto* v : {&r.neighbors, &r.fields, &r.reductions}) {
+  for (auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem}) {
     std::uint64_t n = 0;
     in.read(reinterpret_cast<char*>(&n), sizeof n);
     v->resize(n);
@@ -115,4 +153,5 @@ TEST(ThreadAgreement, OneAndTwoThreadsGiveTheSameResults) {
     ASSERT_NEAR(now.fields[k], ref.fields[k], 1e-12 * scale) << "field value " << k;
   for (std::size_t k = 0; k < now.reductions.size(); ++k)
     EXPECT_NEAR(now.reductions[k], ref.reductions[k], 1e-10 * std::abs(ref.reductions[k])) << "reduction " << k;
+  EXPECT_EQ(now.dem, ref.dem);  // DEM: bitwise
 }

@@ -1,0 +1,135 @@
+// The Chung & Ooi (2011) DEM benchmark impacts (seed 002 paper 2's contact law): runs a scene of
+// scenes/dem/ (or, with --all, every chung_ooi_test*.toml next to it) and compares with Hertz theory.
+//   dem_benchmark [--scene scenes/dem/chung_ooi_test1.toml] [--all] [--out out/dem_benchmark]
+// Writes summary.json: test1_max_force, test1_contact_time, test1_max_overlap (and the Hertz values and
+// relative errors), the same for test2 (and test2_mesh_* for the meshed wall), test3_restitution
+// [[input, measured], ...], test4_rebound_angles [[incidence_deg, rebound_deg], ...]; and test4.csv.
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "apps/common/app.hpp"
+#include "dem/benchmark.hpp"
+#include "io/dem_scene.hpp"
+
+namespace pm = polymech;
+namespace dm = polymech::dem;
+
+namespace {
+
+std::int64_t total_steps = 0;  // over every run, for the rate in summary.json
+
+// Hertz theory of the scene's impact: m*, R*, E*, approach speed.
+void hertz_of(const pm::io::DemScene& s, double& m_star, double& r_star, double& e_star, double& v) {
+  const auto& k = s.impact;
+  const double m = dm::sphere_mass(k);
+  if (s.target == "sphere") {
+    m_star = 0.5 * m;
+    r_star = 0.5 * k.radius;
+    e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, k.particle.young, k.particle.poisson);
+    v = 2 * k.speed;
+  } else {
+    m_star = m;
+    r_star = k.radius;
+    e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, k.wall.young, k.wall.poisson);
+    v = k.speed;
+  }
+}
+
+void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
+  const std::string prefix = "test" + std::to_string(s.test) + (s.target == "mesh" ? "_mesh_" : "_");
+  if (s.test == 1 || s.test == 2) {
+    const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, s.restitutions[0]));
+    total_steps += got.steps;
+    double m_star, r_star, e_star, v;
+    hertz_of(s, m_star, r_star, e_star, v);
+    const double f = dm::hertz_max_force(m_star, r_star, e_star, v);
+    const double d = dm::hertz_max_overlap(m_star, r_star, e_star, v);
+    const double t = dm::hertz_contact_time(m_star, r_star, e_star, v);
+    j[prefix + "max_force"] = got.max_force;
+    j[prefix + "contact_time"] = got.contact_time;
+    j[prefix + "max_overlap"] = got.max_overlap;
+    j[prefix + "restitution"] = got.normal_restitution;
+    j[prefix + "hertz_max_force"] = f;
+    j[prefix + "hertz_contact_time"] = t;
+    j[prefix + "hertz_max_overlap"] = d;
+    j[prefix + "max_force_error"] = got.max_force / f - 1;
+    j[prefix + "contact_time_error"] = got.contact_time / t - 1;
+    j[prefix + "max_overlap_error"] = got.max_overlap / d - 1;
+    j[prefix + "dt"] = pm::io::dem_impact_config(s, 0.0, s.restitutions[0]).dt;
+    if (!quiet)
+      std::printf("%s: F_max %.6g N (Hertz %.6g, %+.3f %%), delta_max %.6g m (%+.3f %%), t_c %.6g s (Hertz %.6g, %+.3f %%)\n",
+                  s.header.file.filename().c_str(), got.max_force, f, 100 * (got.max_force / f - 1), got.max_overlap,
+                  100 * (got.max_overlap / d - 1), got.contact_time, t, 100 * (got.contact_time / t - 1));
+  } else if (s.test == 3) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (double e : s.restitutions) {
+      const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, e));
+      total_steps += got.steps;
+      rows.push_back({e, got.normal_restitution});
+      if (!quiet) std::printf("test 3: restitution %.2f -> measured %.4f\n", e, got.normal_restitution);
+    }
+    j["test3_restitution"] = rows;
+  } else if (s.test == 4) {
+    nlohmann::json rows = nlohmann::json::array();
+    std::vector<double> in, out, vt, w;
+    for (double angle : s.angles) {
+      const auto got = dm::run_impact(pm::io::dem_impact_config(s, angle, s.restitutions[0]));
+      total_steps += got.steps;
+      const double rebound = dm::rebound_angle_deg(got, s.impact.radius);
+      rows.push_back({angle, rebound});
+      in.push_back(angle);
+      out.push_back(rebound);
+      vt.push_back(got.v_after[0]);
+      w.push_back(got.omega_after[1]);
+      if (!quiet) std::printf("test 4: incidence %4.1f deg -> rebound %7.3f deg\n", angle, rebound);
+    }
+    j["test4_rebound_angles"] = rows;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Chung & Ooi (2011) DEM benchmark impacts against Hertz theory (seed 002 paper 2)"};
+  pm::apps::CommonOptions opt;
+  pm::apps::add_common_options(app, opt, "scenes/dem/chung_ooi_test1.toml", "out/dem_benchmark");
+  bool all = false;
+  app.add_flag("--all", all, "run every chung_ooi_test*.toml in the scene's folder");
+  CLI11_PARSE(app, argc, argv);
+  return pm::apps::guarded("dem_benchmark", [&] {
+    pm::apps::KokkosSession kokkos(opt.threads);
+    std::vector<std::filesystem::path> files = {opt.scene};
+    if (all) {
+      files.clear();
+      for (const auto& e : std::filesystem::directory_iterator(opt.scene.parent_path()))
+        if (e.path().filename().string().rfind("chung_ooi_test", 0) == 0 && e.path().extension() == ".toml")
+          files.push_back(e.path());
+      std::sort(files.begin(), files.end());
+    }
+    std::vector<pm::io::DemScene> scenes;
+    for (const auto& f : files) scenes.push_back(pm::io::load_dem_scene(f, opt.precision));
+    bool stop = false;
+    for (const auto& s : scenes) stop = pm::apps::announce_cost("dem_benchmark", s.header, s.cost, opt) || stop;
+    if (stop) return 0;
+    pm::io::make_output_dir(opt.out);
+    nlohmann::json j = pm::apps::summary_header("dem_benchmark", scenes.front().header);
+    j["scenes"] = nlohmann::json::array();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const auto& s : scenes) {
+      j["scenes"].push_back(s.header.file.string());
+      run_scene(s, j, opt.quiet);
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    j["wall_seconds"] = wall;
+    j["steps"] = total_steps;
+    j["steps_per_second"] = static_cast<double>(total_steps) / wall;
+    pm::io::write_json(opt.out / "summary.json", j);
+    std::printf("results in %s\n", opt.out.c_str());
+    return 0;
+  });
+}

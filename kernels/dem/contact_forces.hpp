@@ -1,0 +1,142 @@
+// The contact kernels of the DEM model: sphere-sphere (over the rows of a full neighbour list), sphere
+// against analytic planes, sphere against the facets of a SurfaceMesh (inside-outside, one force per
+// touching feature). Each kernel runs over the spheres and adds to sphere i only (its acceleration and
+// angular acceleration): no atomics, and the result does not depend on the thread count. In a full
+// list a pair is met from both ends; each end keeps its own tangential spring, the mirror of the other.
+//
+// History: the tangential spring xi of contact k sits in hist(k, 0..2) (contact::PairHistory::values,
+// carried across list rebuilds); it is set to zero while the pair is listed but not touching, so a new
+// contact starts unloaded. An empty hist (friction off) is never read.
+#pragma once
+
+#include "contact/sphere_facet.hpp"
+#include "dem/hertz_mindlin.hpp"
+#include "dem/spheres.hpp"
+#include "neighbors/neighbor_list.hpp"
+
+namespace polymech::dem {
+
+template <class T>
+using SpringView = Kokkos::View<T* [3], Kokkos::LayoutRight, MemSpace>;
+
+// Analytic planes: a point and the unit normal of the side the spheres are on, (px, py, pz, nx, ny, nz).
+template <class T>
+using PlaneView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
+
+namespace detail {
+
+// Adds one contact's force (and torque, about the centre; lever -r n) to sphere i.
+template <class T>
+KOKKOS_INLINE_FUNCTION void add_contact(const SphereSet<T>& s, Index i, const Vec3<T>& n, T r_i, const Vec3<T>& f) {
+  const T m = s.mass(i);
+  const T inv_inertia = T(2.5) / (m * r_i * r_i);
+  const Vec3<T> torque = cross((-r_i) * n, f);
+  for (int k = 0; k < 3; ++k) {
+    s.a(i, k) += f[k] / m;
+    s.alpha(i, k) += inv_inertia * torque[k];
+  }
+}
+
+template <class T>
+KOKKOS_INLINE_FUNCTION Vec3<T> spring(const SpringView<T>& h, Offset k, bool friction) {
+  return friction ? load<3>(h, k) : Vec3<T>::zero();
+}
+
+}  // namespace detail
+
+// Kernel "polymech::dem::sphere_sphere": Hertz-Mindlin forces between listed spheres in contact.
+template <class T>
+void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const SpringView<T>& hist,
+                          const HertzMindlin<T>& p, bool friction, T dt) {
+  Kokkos::parallel_for(
+      "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
+        const T ri = s.radius(i), mi = s.mass(i);
+        for (Offset k = list.begin(i); k < list.end(i); ++k) {
+          const Index j = list.neighbor(k);
+          const Vec3<T> d = xi_pos - load<3>(s.x, j);
+          const T dist = norm(d), rj = s.radius(j);
+          const T delta = ri + rj - dist;
+          if (!(delta > T(0)) || !(dist > T(0))) {
+            if (friction) store<3>(hist, k, Vec3<T>::zero());
+            continue;
+          }
+          const Vec3<T> n = (T(1) / dist) * d;  // from j to i
+          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), rj * n);
+          const T mj = s.mass(j);
+          Vec3<T> xi = detail::spring(hist, k, friction);
+          const auto c = hertz_mindlin_force(p, ri * rj / (ri + rj), mi * mj / (mi + mj), delta, n, v_rel, friction, dt, xi);
+          if (friction) store<3>(hist, k, xi);
+          detail::add_contact(s, i, n, ri, c.force);
+        }
+      });
+}
+
+// Kernel "polymech::dem::sphere_plane": every sphere against every plane (one-sided: a sphere whose
+// centre is less than r behind a plane is pushed out along its normal). hist(i * planes + q).
+template <class T>
+void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, const SpringView<T>& hist,
+                         const HertzMindlin<T>& p, bool friction, T dt) {
+  const Index np = static_cast<Index>(planes.extent(0));
+  Kokkos::parallel_for(
+      "polymech::dem::sphere_plane", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
+        const T ri = s.radius(i), mi = s.mass(i);
+        for (Index q = 0; q < np; ++q) {
+          const Offset k = static_cast<Offset>(i) * np + q;
+          const Vec3<T> point{{planes(q, 0), planes(q, 1), planes(q, 2)}};
+          const Vec3<T> n{{planes(q, 3), planes(q, 4), planes(q, 5)}};
+          const T d = dot(xi_pos - point, n);
+          const T delta = ri - d;
+          if (!(delta > T(0)) || !(d > -ri)) {
+            if (friction) store<3>(hist, k, Vec3<T>::zero());
+            continue;
+          }
+          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n);
+          Vec3<T> xi = detail::spring(hist, k, friction);
+          const auto c = hertz_mindlin_force(p, ri, mi, delta, n, v_rel, friction, dt, xi);  // R* = r, m* = m
+          if (friction) store<3>(hist, k, xi);
+          detail::add_contact(s, i, n, ri, c.force);
+        }
+      });
+}
+
+// At most this many facets in one sphere's row take part in its contacts (a row is the facets whose
+// centroid lies within r + the largest facet radius + skin: a few for a mesh finer than the sphere).
+inline constexpr int max_facets_per_sphere = 24;
+
+// Kernel "polymech::dem::sphere_facet": spheres against the facets of a static surface mesh listed in
+// `list` (two-set: sphere i -> facet j), by the inside-outside algorithm with one force per touching
+// feature (contact/sphere_facet.hpp). R* = r and m* = m (a rigid, fixed surface).
+template <class T>
+void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh, const neighbors::NeighborList& list,
+                         const SpringView<T>& hist, const HertzMindlin<T>& p, bool friction, T dt) {
+  Kokkos::parallel_for(
+      "polymech::dem::sphere_facet", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
+        const T ri = s.radius(i), mi = s.mass(i);
+        contact::FacetContact<T> c[max_facets_per_sphere];
+        Index facet[max_facets_per_sphere];
+        const Offset begin = list.begin(i);
+        const int count = static_cast<int>(kx::min<Offset>(list.end(i) - begin, Offset(max_facets_per_sphere)));
+        for (int m = 0; m < count; ++m) {
+          facet[m] = list.neighbor(begin + m);
+          c[m] = contact::sphere_facet_contact(mesh, facet[m], xi_pos, ri);
+        }
+        for (int m = 0; m < count; ++m) {
+          const Offset k = begin + m;
+          if (!contact::keep_facet_contact(mesh, facet, c, count, m)) {
+            if (friction) store<3>(hist, k, Vec3<T>::zero());
+            continue;
+          }
+          const Vec3<T> n = c[m].normal;
+          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n);
+          Vec3<T> xi = detail::spring(hist, k, friction);
+          const auto f = hertz_mindlin_force(p, ri, mi, c[m].overlap, n, v_rel, friction, dt, xi);
+          if (friction) store<3>(hist, k, xi);
+          detail::add_contact(s, i, n, ri, f.force);
+        }
+      });
+}
+
+}  // namespace polymech::dem

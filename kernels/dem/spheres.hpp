@@ -1,0 +1,65 @@
+// The spheres of a DEM model: the shared particle set (x0, u, v, a) with what a rotating sphere adds
+// (radius, mass, angular velocity and acceleration) and the current positions the broad phase bins.
+// The integrator is the shared velocity Verlet (particles::kick / drift) plus kick_rotation for the
+// spin; a sphere's orientation is not tracked (its contacts do not depend on it; clumps will add it).
+#pragma once
+
+#include <string>
+
+#include "particles/particle_set.hpp"
+
+namespace polymech::dem {
+
+template <class T>
+struct SphereSet : particles::ParticleSet<T, 3> {
+  View1<T> radius, mass;
+  VecView<T, 3> omega;  // angular velocity
+  VecView<T, 3> alpha;  // angular acceleration (torque / I, I = 2/5 m r^2)
+  VecView<T, 3> x;      // current positions x0 + u (current_positions())
+};
+
+template <class T>
+void allocate(SphereSet<T>& s, Index n, const std::string& prefix) {
+  particles::allocate<T, 3>(s, n, prefix);
+  const auto size = static_cast<std::size_t>(n);
+  s.radius = View1<T>(prefix + "radius", size);
+  s.mass = View1<T>(prefix + "mass", size);
+  s.omega = VecView<T, 3>(prefix + "omega", size);
+  s.alpha = VecView<T, 3>(prefix + "alpha", size);
+  s.x = VecView<T, 3>(prefix + "x", size);
+}
+
+// Kernel "polymech::dem::current_positions": x = x0 + u.
+template <class T>
+void current_positions(const SphereSet<T>& s) {
+  const auto x = s.x, x0 = s.x0, u = s.u;
+  Kokkos::parallel_for(
+      "polymech::dem::current_positions", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) x(i, k) = x0(i, k) + u(i, k);
+      });
+}
+
+// Kernel "polymech::dem::body_forces": a = g, alpha = 0 (the contact kernels add to both).
+template <class T>
+void body_forces(const SphereSet<T>& s, const Vec3<T>& g) {
+  const auto a = s.a, alpha = s.alpha;
+  Kokkos::parallel_for(
+      "polymech::dem::body_forces", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) {
+          a(i, k) = g[k];
+          alpha(i, k) = T(0);
+        }
+      });
+}
+
+// Kernel "polymech::dem::kick_rotation": omega += h alpha (velocity Verlet's half kick of the spin).
+template <class T>
+void kick_rotation(const SphereSet<T>& s, T h) {
+  const auto omega = s.omega, alpha = s.alpha;
+  Kokkos::parallel_for(
+      "polymech::dem::kick_rotation", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) omega(i, k) += h * alpha(i, k);
+      });
+}
+
+}  // namespace polymech::dem

@@ -1,0 +1,271 @@
+// Discrete elements: spheres with Hertz-Mindlin contact (seed 002 paper 2, eqs. (11)-(17)) against each
+// other, analytic planes and quadrilateral FE surfaces (inside-outside, eqs. (1)-(10)).
+//
+//   polymech::dem::Config c;          // or io::load_dem_scene(...)
+//   c.effects = EffectSet::resolve({"friction", "damping"}, dem::effect_table());
+//   dem::Dem<double> model(c);
+//   models::run(model, steps);
+//
+// One step (models/common/explicit_model.hpp), velocity Verlet on translation and spin:
+//   kick (v, omega) -> drift -> x = x0 + u, a = g -> broad phase (Verlet skin, history carried)
+//   -> sphere_sphere -> sphere_plane -> [sphere_facet] -> kick.
+// Effects: `friction` (the tangential spring, its history), `damping` (restitution < 1), `fe_surfaces`.
+// The time step is refused above time_step_limit() (dem/setup.hpp: Rayleigh and Hertz contact time).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/explicit_model.hpp"
+#include "common/particle_health.hpp"
+#include "common/run.hpp"
+#include "contact/contact_pairs.hpp"
+#include "contact/surface_mesh.hpp"
+#include "dem/config.hpp"
+#include "dem/contact_forces.hpp"
+#include "dem/effect_table.hpp"
+#include "dem/setup.hpp"
+#include "particles/integrators.hpp"
+
+namespace polymech::dem {
+
+struct SphereState {  // host copy of one sphere
+  double x[3], v[3], omega[3], a[3];
+};
+
+template <class T = double>
+class Dem {
+ public:
+  static constexpr int dimension = 3;
+  using Pairs = contact::ContactPairs<T, 3, 3>;
+
+  static const std::vector<EffectSpec>& effects() { return effect_table(); }
+
+  explicit Dem(const Config& c)
+      : cfg_((validate(c), c)),
+        friction_(c.effects.has("friction")),
+        damping_(c.effects.has("damping")),
+        surfaces_(c.effects.has("fe_surfaces")),
+        pairs_(T(2 * max_radius(c)), T(skin(c)), neighbors::ListKind::full, "polymech::dem::sphere_pairs", friction_),
+        facet_pairs_(T(0), T(skin(c)), neighbors::ListKind::full, "polymech::dem::facet_pairs", friction_) {
+    limit_ = time_step_limit(cfg_);
+    if (cfg_.dt <= 0) cfg_.dt = cfg_.dt_safety * limit_.limit;
+    if (cfg_.dt > limit_.limit)
+      throw std::invalid_argument("time step " + std::to_string(cfg_.dt) + " s exceeds the limit " + limit_.describe());
+    const double beta = damping_ ? hertz_damping_ratio(cfg_.restitution) : 0.0;  // calibrated on the Hertz law
+    const double mu = friction_ ? cfg_.friction : 0.0;
+    const auto& p = cfg_.particle;
+    const auto& w = cfg_.wall;
+    pp_ = law(p, p, beta, mu);
+    pw_ = law(p, w, beta, mu);
+    allocate_spheres();
+    allocate_planes();
+    if (surfaces_) allocate_surface();
+    register_state();
+  }
+
+  void step() { models::explicit_step(*this); }
+  void prepare() {
+    if (prepared_) return;
+    compute_forces();
+    add_contact_forces();
+    prepared_ = true;
+  }
+  void advance_first_half() {
+    const T dt = T(cfg_.dt);
+    particles::kick<T, 3>(s_, T(0.5) * dt);
+    kick_rotation(s_, T(0.5) * dt);
+    particles::drift<T, 3>(s_, dt);
+  }
+  void compute_forces() {
+    current_positions(s_);
+    Vec3<T> g;  // named, not a braced list passed to the call (nvcc 11.8, docs/DEVELOPING.md)
+    for (int k = 0; k < 3; ++k) g[k] = T(cfg_.gravity[k]);
+    body_forces(s_, g);
+  }
+  void observe() {}
+  void add_contact_forces() {
+    const T dt = T(cfg_.dt);
+    pairs_.update(s_.x);
+    sphere_sphere_forces(s_, pairs_.list(), pairs_.history().values, pp_, friction_, dt);
+    if (planes_.extent(0) > 0) sphere_plane_forces(s_, planes_, plane_history_, pw_, friction_, dt);
+    if (surfaces_) {
+      facet_pairs_.update(s_.x, mesh_.centroid);
+      sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt);
+    }
+  }
+  void advance_second_half() {
+    const T h = T(0.5) * T(cfg_.dt);
+    particles::kick<T, 3>(s_, h);
+    kick_rotation(s_, h);
+    ++step_;
+  }
+
+  double dt() const { return cfg_.dt; }
+  double time() const { return static_cast<double>(step_) * cfg_.dt; }
+  std::int64_t step_index() const { return step_; }
+  void set_step_index(std::int64_t s) { step_ = s; }
+  const TimeStepLimit& limit() const { return limit_; }
+  const Config& config() const { return cfg_; }
+  const SphereSet<T>& spheres() const { return s_; }
+  const contact::SurfaceMesh<T>& surface() const { return mesh_; }
+  int sphere_list_builds() const { return pairs_.builds(); }
+
+  models::Health health() const { return models::particle_health<T, 3>(s_); }
+  const models::StateRegistry& state() const { return state_; }
+  // Checkpoints (models/common/run.hpp): the registered state and the step are written, but a restart
+  // is refused: the contact pairs' tangential springs (ContactPairs, double-buffered) are not yet in
+  // the checkpoint, and a restart without them would not continue the run.
+  void save(models::Archive& a, const std::string& prefix) const {
+    state_.save(a, prefix + "state/");
+    a.put(prefix + "step", step_);
+  }
+  void load(const models::Archive&, const std::string&) {
+    throw std::invalid_argument("dem: restart from a checkpoint is not supported yet (the tangential springs of the "
+                                "contact pairs are not in it)");
+  }
+
+  // Host copy of sphere i (positions x0 + u).
+  SphereState sphere(Index i) const {
+    SphereState out;
+    auto x0 = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(s_.x0, i, Kokkos::ALL()));
+    auto u = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(s_.u, i, Kokkos::ALL()));
+    auto v = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(s_.v, i, Kokkos::ALL()));
+    auto w = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(s_.omega, i, Kokkos::ALL()));
+    auto a = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(s_.a, i, Kokkos::ALL()));
+    for (int k = 0; k < 3; ++k) {
+      out.x[k] = double(x0(k)) + double(u(k));
+      out.v[k] = double(v(k));
+      out.omega[k] = double(w(k));
+      out.a[k] = double(a(k));
+    }
+    return out;
+  }
+  // |m (a - g)| of sphere i: the magnitude of the contact force on it (after a step).
+  double contact_force(Index i) const {
+    const SphereState st = sphere(i);
+    const double m = cfg_.particle.density * 4.0 / 3.0 * kPi * std::pow(cfg_.spheres.at(i).radius, 3);
+    double f2 = 0;
+    for (int k = 0; k < 3; ++k) f2 += std::pow(m * (st.a[k] - cfg_.gravity[k]), 2);
+    return std::sqrt(f2);
+  }
+  // Translational + rotational kinetic energy (host sum).
+  double kinetic_energy() const {
+    auto v = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.v);
+    auto w = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.omega);
+    double e = 0;
+    for (std::size_t i = 0; i < cfg_.spheres.size(); ++i) {
+      const double r = cfg_.spheres[i].radius, m = cfg_.particle.density * 4.0 / 3.0 * kPi * r * r * r;
+      for (int k = 0; k < 3; ++k) e += 0.5 * m * double(v(i, k)) * double(v(i, k)) + 0.2 * m * r * r * double(w(i, k)) * double(w(i, k));
+    }
+    return e;
+  }
+
+ private:
+  static double max_radius(const Config& c) {
+    double r = 0;
+    for (const auto& s : c.spheres) r = std::max(r, s.radius);
+    return r;
+  }
+  static double skin(const Config& c) {
+    if (c.skin > 0) return c.skin;
+    double r = max_radius(c);
+    for (const auto& s : c.spheres) r = std::min(r, s.radius);
+    return 0.2 * r;
+  }
+  static HertzMindlin<T> law(const Material& a, const Material& b, double beta, double mu) {
+    HertzMindlin<T> h;
+    h.e_star = T(effective_modulus(a.young, a.poisson, b.young, b.poisson));
+    h.g_star = T(effective_shear_modulus(a.young, a.poisson, b.young, b.poisson));
+    h.beta = T(beta);
+    h.mu = T(mu);
+    return h;
+  }
+  static void validate(const Config& c) {
+    if (c.spheres.empty()) throw std::invalid_argument("dem: no spheres");
+    for (const auto& s : c.spheres)
+      if (!(s.radius > 0)) throw std::invalid_argument("dem: a sphere radius must be > 0");
+    if (!(c.particle.young > 0) || !(c.particle.density > 0) || !(c.particle.poisson < 0.5))
+      throw std::invalid_argument("dem: particle E > 0, rho > 0 and nu < 0.5 are required");
+    if (c.effects.has("damping") && !(c.restitution > 0 && c.restitution <= 1))
+      throw std::invalid_argument("dem: restitution must be in (0, 1]");
+    if (c.effects.has("fe_surfaces") && c.surface.empty())
+      throw std::invalid_argument("dem: effect fe_surfaces without a surface");
+  }
+
+  void allocate_spheres() {
+    const Index n = static_cast<Index>(cfg_.spheres.size());
+    allocate(s_, n, "polymech::dem::");
+    auto x0 = Kokkos::create_mirror_view(s_.x0);
+    auto v = Kokkos::create_mirror_view(s_.v);
+    auto w = Kokkos::create_mirror_view(s_.omega);
+    auto r = Kokkos::create_mirror_view(s_.radius);
+    auto m = Kokkos::create_mirror_view(s_.mass);
+    for (Index i = 0; i < n; ++i) {
+      const auto& sp = cfg_.spheres[static_cast<std::size_t>(i)];
+      for (int k = 0; k < 3; ++k) {
+        x0(i, k) = T(sp.position[k]);
+        v(i, k) = T(sp.velocity[k]);
+        w(i, k) = T(sp.omega[k]);
+      }
+      r(i) = T(sp.radius);
+      m(i) = T(cfg_.particle.density * 4.0 / 3.0 * kPi * sp.radius * sp.radius * sp.radius);
+    }
+    Kokkos::deep_copy(s_.x0, x0);
+    Kokkos::deep_copy(s_.v, v);
+    Kokkos::deep_copy(s_.omega, w);
+    Kokkos::deep_copy(s_.radius, r);
+    Kokkos::deep_copy(s_.mass, m);
+    Kokkos::deep_copy(s_.x, s_.x0);
+  }
+  void allocate_planes() {
+    if (cfg_.planes.empty()) return;
+    planes_ = PlaneView<T>("polymech::dem::planes", cfg_.planes.size());
+    auto h = Kokkos::create_mirror_view(planes_);
+    for (std::size_t q = 0; q < cfg_.planes.size(); ++q) {
+      const auto& pl = cfg_.planes[q];
+      const double len = std::sqrt(pl.normal[0] * pl.normal[0] + pl.normal[1] * pl.normal[1] + pl.normal[2] * pl.normal[2]);
+      if (!(len > 0)) throw std::invalid_argument("dem: a plane normal must not be zero");
+      for (int k = 0; k < 3; ++k) {
+        h(q, k) = T(pl.point[k]);
+        h(q, 3 + k) = T(pl.normal[k] / len);
+      }
+    }
+    Kokkos::deep_copy(planes_, h);
+    if (friction_) plane_history_ = SpringView<T>("polymech::dem::plane_history", cfg_.spheres.size() * cfg_.planes.size());
+  }
+  void allocate_surface() {
+    std::vector<Index> nodes(cfg_.surface.facet_nodes.begin(), cfg_.surface.facet_nodes.end());
+    mesh_ = contact::make_surface_mesh<T>(cfg_.surface.nodes, cfg_.surface.facet_sizes, nodes, "polymech::dem::surface");
+    facet_pairs_ = Pairs(T(max_radius(cfg_)) + contact::max_facet_radius(mesh_), T(skin(cfg_)), neighbors::ListKind::full,
+                         "polymech::dem::facet_pairs", friction_);
+  }
+  void register_state() {
+    state_.add("u", s_.u);
+    state_.add("v", s_.v);
+    state_.add("a", s_.a);
+    state_.add("omega", s_.omega);
+    state_.add("alpha", s_.alpha);
+    state_.add("plane_history", plane_history_);
+    // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
+    // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md).
+  }
+
+  Config cfg_;
+  bool friction_, damping_, surfaces_;
+  Pairs pairs_, facet_pairs_;
+  TimeStepLimit limit_;
+  HertzMindlin<T> pp_, pw_;
+  SphereSet<T> s_;
+  PlaneView<T> planes_;
+  SpringView<T> plane_history_;
+  contact::SurfaceMesh<T> mesh_;
+  models::StateRegistry state_;
+  std::int64_t step_ = 0;
+  bool prepared_ = false;
+};
+
+}  // namespace polymech::dem

@@ -1,0 +1,25 @@
+// The effects of the DEM model (seed 002 paper 2), as plain data: what io/ resolves a scene's
+// [model].effects against, without compiling the model.
+#pragma once
+
+#include <vector>
+
+#include "effects.hpp"
+
+namespace polymech::dem {
+
+inline const std::vector<EffectSpec>& effect_table() {
+  static const std::vector<EffectSpec> specs = {
+      {"friction", "tangential Mindlin spring with a Coulomb limit (seed 002 paper 2 eqs. (13)-(15)), kept per contact",
+       {}, {"polymech::contact::carry_history"},
+       "3 reals + 1 int per listed pair (sphere-sphere, sphere-facet), 3 reals per sphere and plane"},
+      {"damping", "viscous normal and tangential damping from the restitution coefficient (eqs. (12), (13), (17))",
+       {}, {}, "nothing (a coefficient per contact, evaluated in the force kernels)"},
+      {"fe_surfaces", "spheres against quadrilateral FE segments by the inside-outside algorithm (eqs. (1)-(10))", {},
+       {"polymech::contact::facet_geometry", "polymech::dem::sphere_facet"},
+       "the surface mesh (nodes, facets, centroids, normals) and a sphere-facet pair list"},
+  };
+  return specs;
+}
+
+}  // namespace polymech::dem

@@ -1,0 +1,281 @@
+// DEM kernels: the Hertz-Mindlin force law (eqs. (11)-(17)) and the sphere-facet inside-outside
+// regions (eqs. (1)-(10)), every region, one force per touching feature, continuity across edges and
+// nodes, and a meshed flat wall against the analytic plane.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "contact/sphere_facet.hpp"
+#include "dem/contact_forces.hpp"
+
+namespace pm = polymech;
+namespace ct = polymech::contact;
+namespace dm = polymech::dem;
+using V3 = pm::Vec3<double>;
+
+namespace {
+
+struct HostContact {
+  int region;
+  long a, b;
+  double overlap, n[3], q[3];
+};
+
+// Contacts of spheres (centres p, radius r) with facet f, evaluated in a kernel.
+std::vector<HostContact> contacts(const ct::SurfaceMesh<double>& m, pm::Index f, const std::vector<V3>& p, double r) {
+  const auto n = p.size();
+  pm::VecView<double, 3> pts("pts", n);
+  auto hp = Kokkos::create_mirror_view(pts);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) hp(i, k) = p[i][k];
+  Kokkos::deep_copy(pts, hp);
+  Kokkos::View<double* [9], Kokkos::LayoutRight, pm::MemSpace> out("out", n);
+  Kokkos::parallel_for(
+      "test::sphere_facet", pm::range(static_cast<std::int64_t>(n)), KOKKOS_LAMBDA(const std::int64_t i) {
+        const auto c = ct::sphere_facet_contact(m, f, pm::load<3>(pts, i), r);
+        out(i, 0) = static_cast<double>(c.region);
+        out(i, 1) = static_cast<double>(c.node_a);
+        out(i, 2) = static_cast<double>(c.node_b);
+        out(i, 3) = c.overlap;
+        for (int k = 0; k < 3; ++k) {
+          out(i, 4 + k) = c.normal[k];
+        }
+        out(i, 7) = c.point[0];
+        out(i, 8) = c.point[1];
+      });
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
+  std::vector<HostContact> r_out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    r_out[i].region = static_cast<int>(h(i, 0));
+    r_out[i].a = static_cast<long>(h(i, 1));
+    r_out[i].b = static_cast<long>(h(i, 2));
+    r_out[i].overlap = h(i, 3);
+    for (int k = 0; k < 3; ++k) r_out[i].n[k] = h(i, 4 + k);
+    r_out[i].q[0] = h(i, 7);
+    r_out[i].q[1] = h(i, 8);
+  }
+  return r_out;
+}
+
+// A flat grid of nx x ny unit quads at z = 0 (normal +z), spacing h, from the origin.
+ct::SurfaceMesh<double> grid_mesh(int nx, int ny, double h, double z = 0.0) {
+  std::vector<double> nodes;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      nodes.push_back(i * h);
+      nodes.push_back(j * h);
+      nodes.push_back(z);
+    }
+  std::vector<int> sizes;
+  std::vector<pm::Index> fn;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const pm::Index n0 = j * (nx + 1) + i;
+      sizes.push_back(4);
+      for (pm::Index n : {n0, n0 + 1, n0 + nx + 2, n0 + nx + 1}) fn.push_back(n);
+    }
+  return ct::make_surface_mesh<double>(nodes, sizes, fn, "test_grid");
+}
+
+dm::SphereSet<double> spheres_at(const std::vector<V3>& p, double r, double density, const std::vector<V3>& v = {}) {
+  dm::SphereSet<double> s;
+  dm::allocate(s, static_cast<pm::Index>(p.size()), "test::");
+  auto x = Kokkos::create_mirror_view(s.x);
+  auto vel = Kokkos::create_mirror_view(s.v);
+  auto rad = Kokkos::create_mirror_view(s.radius);
+  auto m = Kokkos::create_mirror_view(s.mass);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      x(i, k) = p[i][k];
+      vel(i, k) = v.empty() ? 0.0 : v[i][k];
+    }
+    rad(i) = r;
+    m(i) = density * 4.0 / 3.0 * dm::kPi * r * r * r;
+  }
+  Kokkos::deep_copy(s.x, x);
+  Kokkos::deep_copy(s.x0, x);
+  Kokkos::deep_copy(s.v, vel);
+  Kokkos::deep_copy(s.radius, rad);
+  Kokkos::deep_copy(s.mass, m);
+  return s;
+}
+
+std::vector<V3> accelerations(const dm::SphereSet<double>& s) {
+  auto a = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.a);
+  std::vector<V3> out(s.size());
+  for (pm::Index i = 0; i < s.size(); ++i) out[i] = V3{{a(i, 0), a(i, 1), a(i, 2)}};
+  return out;
+}
+
+// The accelerations from the surface (all facets listed for every sphere) and from the plane z = 0.
+std::pair<std::vector<V3>, std::vector<V3>> mesh_and_plane(const ct::SurfaceMesh<double>& mesh, const std::vector<V3>& p,
+                                                           double r, const std::vector<V3>& v = {}) {
+  const double density = 2500;
+  dm::HertzMindlin<double> law{5e10, 2e10, dm::damping_ratio(0.8), 0.3};
+  auto s = spheres_at(p, r, density, v);
+  pm::neighbors::NeighborList all;  // every facet for every sphere
+  const pm::Index nf = mesh.facet_count(), n = s.size();
+  all.offsets = Kokkos::View<pm::Offset*, pm::MemSpace>("off", n + 1);
+  all.neighbors = Kokkos::View<pm::Index*, pm::MemSpace>("nbr", std::size_t(n * nf));
+  auto ho = Kokkos::create_mirror_view(all.offsets);
+  auto hn = Kokkos::create_mirror_view(all.neighbors);
+  for (pm::Index i = 0; i <= n; ++i) ho(i) = i * nf;
+  for (pm::Index i = 0; i < n; ++i)
+    for (pm::Index f = 0; f < nf; ++f) hn(i * nf + f) = f;
+  Kokkos::deep_copy(all.offsets, ho);
+  Kokkos::deep_copy(all.neighbors, hn);
+  all.num_particles = n;
+  all.num_pairs = n * nf;
+  dm::SpringView<double> hist("hist", std::size_t(n * nf));
+  dm::body_forces(s, V3::zero());
+  dm::sphere_facet_forces(s, mesh, all, hist, law, true, 1e-6);
+  const auto from_mesh = accelerations(s);
+  dm::PlaneView<double> plane("plane", 1);
+  auto hpl = Kokkos::create_mirror_view(plane);
+  for (int k = 0; k < 6; ++k) hpl(0, k) = k == 5 ? 1.0 : 0.0;
+  Kokkos::deep_copy(plane, hpl);
+  dm::SpringView<double> phist("phist", std::size_t(n));
+  dm::body_forces(s, V3::zero());
+  dm::sphere_plane_forces(s, plane, phist, law, true, 1e-6);
+  return {from_mesh, accelerations(s)};
+}
+
+}  // namespace
+
+TEST(HertzMindlin, StaticNormalForceIsHertz) {
+  dm::HertzMindlin<double> law{4e10, 1.5e10, 0.0, 0.5};
+  V3 xi = V3::zero();
+  const double r = 0.01, m = 0.01, delta = 1e-5;
+  const auto c = dm::hertz_mindlin_force(law, r, m, delta, V3{{0, 0, 1}}, V3::zero(), true, 1e-7, xi);
+  const double expected = 4.0 / 3.0 * 4e10 * std::sqrt(r) * std::pow(delta, 1.5);
+  EXPECT_NEAR(c.normal, expected, 1e-12 * expected);
+  EXPECT_NEAR(c.force[2], expected, 1e-12 * expected);
+  EXPECT_EQ(c.force[0], 0.0);
+}
+
+TEST(HertzMindlin, TangentialSpringIsMindlinAndCoulombLimited) {
+  dm::HertzMindlin<double> law{4e10, 1.5e10, 0.0, 0.3};
+  const double r = 0.01, m = 0.01, delta = 1e-5, dt = 1e-7;
+  // a small tangential displacement: F_t = -8 G* sqrt(R delta) xi
+  V3 xi = V3::zero();
+  const auto c = dm::hertz_mindlin_force(law, r, m, delta, V3{{0, 0, 1}}, V3{{1e-3, 0, 0}}, true, dt, xi);
+  EXPECT_NEAR(xi[0], 1e-10, 1e-22);
+  EXPECT_NEAR(c.force[0], -8 * 1.5e10 * std::sqrt(r * delta) * 1e-10, 1e-9);
+  // a large one: |F_t| = mu F_n, the spring shortened to match
+  xi = V3{{1e-3, 0, 0}};
+  const auto s = dm::hertz_mindlin_force(law, r, m, delta, V3{{0, 0, 1}}, V3::zero(), true, dt, xi);
+  EXPECT_NEAR(std::abs(s.force[0]), 0.3 * s.normal, 1e-9 * s.normal);
+  EXPECT_NEAR(8 * 1.5e10 * std::sqrt(r * delta) * xi[0], 0.3 * s.normal, 1e-9 * s.normal);
+  // the spring is rotated into the tangent plane, its length kept
+  xi = V3{{3e-9, 0, 4e-9}};
+  (void)dm::hertz_mindlin_force(law, r, m, delta, V3{{0, 0, 1}}, V3::zero(), true, dt, xi);
+  EXPECT_NEAR(xi[0], 5e-9, 1e-20);
+  EXPECT_EQ(xi[2], 0.0);
+}
+
+TEST(HertzMindlin, EffectiveModuliAndRigidWall) {
+  EXPECT_NEAR(dm::effective_modulus(4.8e10, 0.2, 4.8e10, 0.2), 2.5e10, 1.0);
+  EXPECT_NEAR(dm::effective_modulus(7e10, 0.33, 0.0, 0.0), 7e10 / (1 - 0.33 * 0.33), 1.0);
+  const double g = 7e10 / 2.66;
+  EXPECT_NEAR(dm::effective_shear_modulus(7e10, 0.33, 0.0, 0.0), g / 1.67, 1.0);
+  EXPECT_NEAR(dm::damping_ratio(1.0), 0.0, 1e-15);
+  EXPECT_LT(dm::damping_ratio(0.5), 0.0);
+}
+
+TEST(SphereFacet, EveryRegionOfAQuad) {
+  const auto m = grid_mesh(1, 1, 1.0);  // nodes 0 (0,0) 1 (1,0) 2 (0,1) 3 (1,1); facet 0-1-3-2
+  const double r = 0.1;
+  const auto c = contacts(m, 0,
+                          {V3{{0.5, 0.4, 0.05}}, V3{{1.03, 0.5, 0.05}}, V3{{1.03, 1.04, 0.05}}, V3{{-0.02, 0.5, 0.0}},
+                           V3{{0.5, 0.5, 0.2}}, V3{{0.5, 0.5, -0.12}}, V3{{0.5, 0.5, -0.05}}, V3{{1.2, 0.5, 0.0}},
+                           V3{{0.5, -0.05, -0.05}}},
+                          r);
+  // PTF: overlap r - d along +z
+  EXPECT_EQ(c[0].region, int(ct::FacetRegion::facet));
+  EXPECT_NEAR(c[0].overlap, 0.05, 1e-14);
+  EXPECT_NEAR(c[0].n[2], 1.0, 1e-14);
+  EXPECT_NEAR(c[0].q[0], 0.5, 1e-14);
+  // PTE: edge 1-3 (x = 1), Q = (1, 0.5, 0)
+  EXPECT_EQ(c[1].region, int(ct::FacetRegion::edge));
+  EXPECT_EQ(c[1].a, 1);
+  EXPECT_EQ(c[1].b, 3);
+  EXPECT_NEAR(c[1].overlap, r - std::hypot(0.03, 0.05), 1e-14);
+  EXPECT_NEAR(c[1].q[1], 0.5, 1e-14);
+  EXPECT_NEAR(c[1].n[0], 0.03 / std::hypot(0.03, 0.05), 1e-14);
+  // PTN: node 3 at (1, 1)
+  EXPECT_EQ(c[2].region, int(ct::FacetRegion::node));
+  EXPECT_EQ(c[2].a, 3);
+  EXPECT_NEAR(c[2].overlap, r - std::sqrt(0.03 * 0.03 + 0.04 * 0.04 + 0.05 * 0.05), 1e-14);
+  // PTE in the plane of the facet: edge 2-0 (x = 0), normal -x
+  EXPECT_EQ(c[3].region, int(ct::FacetRegion::edge));
+  EXPECT_EQ(c[3].a, 0);
+  EXPECT_EQ(c[3].b, 2);
+  EXPECT_NEAR(c[3].n[0], -1.0, 1e-14);
+  // too far above, more than r behind, farther than r from every edge: none
+  EXPECT_EQ(c[4].region, int(ct::FacetRegion::none));
+  EXPECT_EQ(c[5].region, int(ct::FacetRegion::none));
+  EXPECT_EQ(c[7].region, int(ct::FacetRegion::none));
+  // a centre behind the facet plane (less than r) is still pushed out along +z: overlap r + |d|
+  EXPECT_EQ(c[6].region, int(ct::FacetRegion::facet));
+  EXPECT_NEAR(c[6].overlap, 0.15, 1e-14);
+  // below the plane and outside an edge: the other side's business
+  EXPECT_EQ(c[8].region, int(ct::FacetRegion::none));
+}
+
+TEST(SphereFacet, TriangleAndWarpedQuad) {
+  // a triangle (0,0,0) (1,0,0) (0,1,0) and a quad with one node lifted (warped): normal of the diagonals
+  std::vector<double> nodes = {0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 0, 0, 4, 0, 0.1, 4, 1, 0, 3, 1, 0.1};
+  const auto m = ct::make_surface_mesh<double>(nodes, {3, 4}, {0, 1, 2, 3, 4, 5, 6}, "tri_quad");
+  const auto t = contacts(m, 0, {V3{{0.2, 0.2, 0.05}}, V3{{0.55, 0.55, 0.0}}}, 0.1);
+  EXPECT_EQ(t[0].region, int(ct::FacetRegion::facet));
+  EXPECT_NEAR(t[0].overlap, 0.05, 1e-14);
+  EXPECT_EQ(t[1].region, int(ct::FacetRegion::edge));  // the hypotenuse 1-2
+  EXPECT_EQ(t[1].a, 1);
+  EXPECT_EQ(t[1].b, 2);
+  EXPECT_NEAR(t[1].overlap, 0.1 - std::sqrt(2 * 0.05 * 0.05), 1e-14);
+  const auto q = contacts(m, 1, {V3{{3.5, 0.5, 0.1}}}, 0.1);
+  EXPECT_EQ(q[0].region, int(ct::FacetRegion::facet));
+  // the mean plane passes through the centroid (3.5, 0.5, 0.05) with normal (x2-x0) x (x3-x1) = (0, 0, 1)-ish
+  EXPECT_NEAR(q[0].n[2], 1.0, 1e-12);
+  EXPECT_NEAR(q[0].overlap, 0.05, 1e-12);
+}
+
+TEST(SphereFacet, OneForceAtSharedEdgesAndNodesAndMeshEqualsPlane) {
+  const auto mesh = grid_mesh(2, 2, 0.5);  // four quads, a shared node at (0.5, 0.5)
+  const double r = 0.05;
+  std::vector<V3> p;
+  // across the shared edge x = 0.5, on it, and over the shared node, sliding along x and diagonally
+  for (int k = 0; k <= 40; ++k) p.push_back(V3{{0.45 + 0.0025 * k, 0.3, 0.048}});
+  for (int k = 0; k <= 40; ++k) p.push_back(V3{{0.45 + 0.0025 * k, 0.45 + 0.0025 * k, 0.046}});
+  p.push_back(V3{{0.5, 0.5, 0.04}});
+  std::vector<V3> v(p.size(), V3{{0.3, -0.2, -0.5}});
+  const auto [from_mesh, from_plane] = mesh_and_plane(mesh, p, r, v);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(from_mesh[i][k], from_plane[i][k], 1e-9 * std::abs(from_plane[i][2])) << "sphere " << i << " comp " << k;
+  EXPECT_GT(from_plane.back()[2], 0.0);
+}
+
+TEST(SphereFacet, ConvexRidgeGivesOneContinuousForce) {
+  // two facets meeting at a ridge along y at x = 1 (the second tilted down by 30 degrees)
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  std::vector<double> nodes = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1 + c, 0, -s, 1 + c, 1, -s};
+  const auto mesh = ct::make_surface_mesh<double>(nodes, {4, 4}, {0, 1, 2, 3, 1, 4, 5, 2}, "ridge");
+  const double r = 0.1;
+  const double d = r - 0.002;
+  // a sphere rolling over the ridge at distance d from the surface: on the first facet, round the
+  // ridge (the normal turning from +z to the second facet's), on the second facet
+  std::vector<V3> p = {V3{{0.8, 0.5, d}}};
+  for (int k = 0; k <= 40; ++k) {
+    const double ang = (M_PI / 6) * k / 40.0;
+    p.push_back(V3{{1 + d * std::sin(ang), 0.5, d * std::cos(ang)}});
+  }
+  p.push_back(V3{{1 + 0.3 * c + d * s, 0.5, -0.3 * s + d * c}});
+  const auto all = mesh_and_plane(mesh, p, r).first;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double f = std::sqrt(all[i][0] * all[i][0] + all[i][1] * all[i][1] + all[i][2] * all[i][2]);
+    // one contact of overlap 0.002 (Hertz force of the same magnitude all the way round)
+    EXPECT_NEAR(f, std::sqrt(all[0][0] * all[0][0] + all[0][2] * all[0][2]), 1e-9 * f) << i;
+  }
+}

@@ -1,0 +1,80 @@
+// Many spheres at once: a small pour into a box of planes under gravity, with friction and damping.
+// Every sphere stays inside the box, none overlaps another or a wall by more than a few percent of its
+// radius, and the kinetic energy decays to a small fraction of the potential energy released.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "dem/dem.hpp"
+
+namespace pm = polymech;
+namespace dm = polymech::dem;
+
+TEST(DemPile, PourIntoABoxSettlesInsideTheBox) {
+  dm::Config c;
+  c.particle = {1e7, 0.3, 2500};  // a soft material keeps the step large (a test of seconds)
+  c.wall = {1e7, 0.3, 2500};
+  c.restitution = 0.3;
+  c.friction = 0.5;
+  c.gravity = {0, 0, -9.81};
+  c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
+  const double r = 0.005, box = 0.05;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.2 * r, 0.2 * r);
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        dm::SphereInit s;
+        s.radius = r * (0.9 + 0.1 * ((i + j + k) % 3) / 2.0);
+        s.position = {0.01 + 0.01 * i + jitter(rng), 0.01 + 0.01 * j + jitter(rng), 0.01 + 0.0125 * k};
+        c.spheres.push_back(s);
+      }
+  dm::PlaneInit floor, w0, w1, w2, w3;
+  floor.normal = {0, 0, 1};
+  w0.normal = {1, 0, 0};
+  w1.point = {box, 0, 0};
+  w1.normal = {-1, 0, 0};
+  w2.normal = {0, 1, 0};
+  w3.point = {0, box, 0};
+  w3.normal = {0, -1, 0};
+  c.planes = {floor, w0, w1, w2, w3};
+  c.max_speed = 2.0;
+  dm::Dem<double> m(c);
+  const int steps = static_cast<int>(0.45 / m.dt());
+  double e_peak = 0;
+  pm::models::RunHooks hooks;  // the shared run driver, its watchdog keeping the last good state
+  hooks.sample_every = 200;
+  hooks.sample = [&](std::int64_t) { e_peak = std::max(e_peak, m.kinetic_energy()); };
+  hooks.watchdog.check_every = 500;
+  hooks.watchdog.keep_last_good = true;
+  const auto stats = pm::models::run(m, steps, hooks);
+  EXPECT_FALSE(stats.diverged) << stats.reason;
+  EXPECT_EQ(stats.steps, steps);
+  EXPECT_TRUE(m.health().finite);
+  const double e_end = m.kinetic_energy();
+  std::printf("pile: %zu spheres, %d steps of %.3g s, %d list builds, kinetic energy peak %.3g J, end %.3g J\n",
+              c.spheres.size(), steps, m.dt(), m.sphere_list_builds(), e_peak, e_end);
+  EXPECT_LT(e_end, 1e-3 * e_peak);
+  double max_wall_overlap = 0, max_pair_overlap = 0;
+  std::vector<dm::SphereState> st;
+  for (std::size_t i = 0; i < c.spheres.size(); ++i) st.push_back(m.sphere(static_cast<pm::Index>(i)));
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    const double ri = c.spheres[i].radius;
+    for (int k = 0; k < 2; ++k) {
+      max_wall_overlap = std::max({max_wall_overlap, ri - st[i].x[k], st[i].x[k] + ri - box});
+    }
+    max_wall_overlap = std::max(max_wall_overlap, ri - st[i].x[2]);
+    for (std::size_t j = i + 1; j < st.size(); ++j) {
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k) d2 += (st[i].x[k] - st[j].x[k]) * (st[i].x[k] - st[j].x[k]);
+      max_pair_overlap = std::max(max_pair_overlap, ri + c.spheres[j].radius - std::sqrt(d2));
+    }
+  }
+  EXPECT_LT(max_wall_overlap, 0.05 * r);
+  EXPECT_LT(max_pair_overlap, 0.05 * r);
+}

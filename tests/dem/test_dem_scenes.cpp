@@ -1,0 +1,94 @@
+// DEM scenes: every shipped scenes/dem/*.toml loads; bad scenes are refused naming file:line and key
+// (a time step above the limit with the limit, effects the values need, a mesh target without surfaces).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "io/dem_scene.hpp"
+#include "support/error_messages.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+using polymech::testing::line_of;
+using polymech::testing::replace_once;
+
+namespace {
+
+const std::string kBase = R"(title = "test 2"
+
+[model]
+kind = "dem"
+effects = []
+
+[particle]
+radius = 0.10
+density = 2699.0
+youngs_modulus = 7.0e10
+poisson_ratio = 0.30
+
+[wall]
+rigid = true
+
+[contact]
+restitution = 1.0
+
+[impact]
+target = "plane"
+speed = 0.2
+
+[time]
+steps_per_contact = 400
+)";
+
+void expect_error(const std::string& text, const std::string& at, const std::vector<std::string>& fragments) {
+  polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_dem_scene(p); }, line_of(text, at), fragments);
+}
+
+}  // namespace
+
+TEST(DemScenes, EveryShippedSceneLoads) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(src) / "scenes" / "dem")) {
+    if (e.path().extension() != ".toml") continue;
+    const auto s = io::load_dem_scene(e.path());
+    EXPECT_GT(s.config.dt, 0.0) << e.path();
+    EXPECT_LE(s.config.dt, s.limit.limit) << e.path();
+    ++n;
+  }
+  EXPECT_GE(n, 5);
+}
+
+TEST(DemScenes, BaseLoadsWithTheHertzStep) {
+  polymech::testing::TempDir dir;
+  const auto s = io::load_dem_scene(dir.write("scene.toml", kBase));
+  EXPECT_EQ(s.target, "plane");
+  EXPECT_EQ(s.config.planes.size(), 1u);
+  EXPECT_LT(s.config.dt, s.limit.limit);
+}
+
+TEST(DemScenes, TimeStepAboveTheLimitIsRefusedWithTheLimit) {
+  expect_error(replace_once(kBase, "steps_per_contact = 400", "steps_per_contact = 400\ndt = 1e-4"), "dt = 1e-4",
+               {"time.dt", "above the limit", "Rayleigh"});
+  expect_error(replace_once(kBase, "steps_per_contact = 400", "steps_per_contact = 20\ndt = 5e-5"), "dt = 5e-5",
+               {"time.dt", "above the limit"});
+}
+
+TEST(DemScenes, ValuesThatNeedAnEffectAreRefused) {
+  expect_error(replace_once(kBase, "restitution = 1.0", "restitution = 0.5"), "restitution = 0.5", {"damping"});
+  expect_error(replace_once(kBase, "restitution = 1.0", "restitution = 1.0\nfriction = 0.3"), "friction = 0.3",
+               {"friction"});
+  expect_error(replace_once(kBase, "target = \"plane\"", "target = \"mesh\""), "target = \"mesh\"", {"fe_surfaces"});
+  expect_error(replace_once(kBase, "effects = []", "effects = [\"clumps\"]"), "effects = [\"clumps\"]",
+               {"unknown effect", "friction, damping, fe_surfaces"});
+}
+
+TEST(DemScenes, ImplausibleValuesAreRefused) {
+  expect_error(replace_once(kBase, "radius = 0.10", "radius = 1e300"), "radius = 1e300", {"particle.radius"});
+  expect_error(replace_once(kBase, "speed = 0.2", "speed = -1"), "speed = -1", {"impact.speed"});
+  expect_error(replace_once(kBase, "target = \"plane\"", "target = \"plane\"\nangles = [95]"), "angles = [95]",
+               {"impact.angles"});
+}
