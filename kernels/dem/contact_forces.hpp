@@ -123,15 +123,30 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
           facet[m] = list.neighbor(begin + m);
           c[m] = contact::sphere_facet_contact(mesh, facet[m], xi_pos, ri);
         }
+        bool keep[max_facets_per_sphere];
+        for (int m = 0; m < count; ++m) keep[m] = contact::keep_facet_contact(mesh, facet, c, count, m);
+        // A touching feature dropped as a duplicate is the same contact as a kept one: its spring goes to
+        // the kept contact that has none yet, so a sphere sliding from one facet onto the next keeps it.
+        Vec3<T> carried = Vec3<T>::zero();
+        if (friction)
+          for (int m = 0; m < count; ++m)
+            if (!keep[m] && c[m].region != contact::FacetRegion::none) {
+              const Vec3<T> x = load<3>(hist, begin + m);
+              if (norm2(x) > norm2(carried)) carried = x;
+            }
         for (int m = 0; m < count; ++m) {
           const Offset k = begin + m;
-          if (!contact::keep_facet_contact(mesh, facet, c, count, m)) {
+          if (!keep[m]) {
             if (friction) store<3>(hist, k, Vec3<T>::zero());
             continue;
           }
           const Vec3<T> n = c[m].normal;
           const Vec3<T> v_rel = vi + cross(wi, (-ri) * n);
           Vec3<T> xi = detail::spring(hist, k, friction);
+          if (friction && norm2(xi) == T(0)) {
+            xi = carried;
+            carried = Vec3<T>::zero();
+          }
           const auto f = hertz_mindlin_force(p, ri, mi, c[m].overlap, n, v_rel, friction, dt, xi);
           if (friction) store<3>(hist, k, xi);
           detail::add_contact(s, i, n, ri, f.force);

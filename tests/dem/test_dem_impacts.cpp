@@ -200,3 +200,42 @@ TEST(DemHardCases, TangentialSpringSurvivesNeighbourListRebuilds) {
   }
   EXPECT_GT(std::abs(once.omega[2]), 0.0);  // friction did spin it
 }
+
+TEST(DemHardCases, ASphereRollingAcrossFacetEdgesKeepsItsSpringAndMatchesThePlane) {
+  // a sphere rolls without slipping down the wall (gravity tilted by 20 degrees, mu = 0.5): its contact
+  // sticks, the spring holding the static friction (2/7) m g sin 20; it crosses two edges between
+  // quadrilaterals of side r, and its path must be the analytic plane's. At each edge the contact passes
+  // from one facet to the next: without carrying the spring over, the friction would drop and rebuild.
+  auto k = dm::chung_ooi_alumina();
+  k.particle = {1e7, 0.3, 2500};  // soft: a large step, a test of a second
+  k.radius = 0.005;
+  k.speed = 0.0;
+  const double th = 20.0 * dm::kPi / 180;
+  auto run = [&](bool meshed) {
+    auto c = dm::sphere_on_wall(k, 200, 0.0, meshed);
+    for (std::size_t i = 0; i < c.surface.nodes.size(); i += 3) c.surface.nodes[i] *= 3.0;  // 12 r along x
+    c.spheres[0].position = {-1.3 * k.radius, 0.3 * k.radius, k.radius * (1 - 1e-3)};
+    c.spheres[0].velocity = {0, 0, 0};
+    c.gravity = {9.81 * std::sin(th), 0, -9.81 * std::cos(th)};
+    c.friction = 0.5;
+    c.restitution = 0.5;
+    c.max_speed = 0.5;
+    c.dt = 0;
+    c.effects = pm::EffectSet::resolve(meshed ? std::vector<std::string>{"friction", "damping", "fe_surfaces"}
+                                              : std::vector<std::string>{"friction", "damping"},
+                                       dm::effect_table());
+    dm::Dem<double> m(c);
+    const double a = 5.0 / 7.0 * 9.81 * std::sin(th);  // rolling without slip
+    const auto steps = static_cast<int>(std::sqrt(2 * 2.6 * k.radius / a) / m.dt());
+    for (int s = 0; s < steps; ++s) m.step();
+    return m.sphere(0);
+  };
+  const auto plane = run(false), mesh = run(true);
+  EXPECT_GT(plane.x[0], 0.5 * k.radius);  // it did cross x = -r and x = 0 (two edges)
+  EXPECT_NEAR(plane.v[0] / (k.radius * plane.omega[1]), 1.0, 0.01);  // rolling: v = r w
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(mesh.x[c], plane.x[c], 1e-9 * k.radius) << c;
+    EXPECT_NEAR(mesh.v[c], plane.v[c], 1e-7) << c;
+    EXPECT_NEAR(mesh.omega[c], plane.omega[c], 1e-4) << c;
+  }
+}

@@ -10,40 +10,14 @@
 #include <random>
 #include <vector>
 
-#include "dem/dem.hpp"
+#include "pile.hpp"
 
 namespace pm = polymech;
 namespace dm = polymech::dem;
 
 TEST(DemPile, PourIntoABoxSettlesInsideTheBox) {
-  dm::Config c;
-  c.particle = {1e7, 0.3, 2500};  // a soft material keeps the step large (a test of seconds)
-  c.wall = {1e7, 0.3, 2500};
-  c.restitution = 0.3;
-  c.friction = 0.5;
-  c.gravity = {0, 0, -9.81};
-  c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
-  const double r = 0.005, box = 0.05;
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.2 * r, 0.2 * r);
-  for (int k = 0; k < 6; ++k)
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i) {
-        dm::SphereInit s;
-        s.radius = r * (0.9 + 0.1 * ((i + j + k) % 3) / 2.0);
-        s.position = {0.01 + 0.01 * i + jitter(rng), 0.01 + 0.01 * j + jitter(rng), 0.01 + 0.0125 * k};
-        c.spheres.push_back(s);
-      }
-  dm::PlaneInit floor, w0, w1, w2, w3;
-  floor.normal = {0, 0, 1};
-  w0.normal = {1, 0, 0};
-  w1.point = {box, 0, 0};
-  w1.normal = {-1, 0, 0};
-  w2.normal = {0, 1, 0};
-  w3.point = {0, box, 0};
-  w3.normal = {0, -1, 0};
-  c.planes = {floor, w0, w1, w2, w3};
-  c.max_speed = 2.0;
+  const auto c = pour_into_a_box();
+  const double r = 0.005, box = kBox;
   dm::Dem<double> m(c);
   const int steps = static_cast<int>(0.45 / m.dt());
   double e_peak = 0;

@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""Plots of the Chung & Ooi (2011) DEM benchmark from dem_benchmark's summary.json: the test-4 rebound
+angle of the contact point against the incidence angle (with the gross-sliding closed form), and the
+test-3 restitution measured against the input.
+
+  /usr/bin/python3 tools/plot_dem_benchmark.py docs/figures/dem/summary.json [out_dir]
+
+Writes test4_rebound.png and test3_restitution.png next to the summary (or into out_dir).
+"""
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    path = sys.argv[1] if len(sys.argv) > 1 else "docs/figures/dem/summary.json"
+    out = sys.argv[2] if len(sys.argv) > 2 else os.path.dirname(path)
+    with open(path) as f:
+        s = json.load(f)
+    if "test4_rebound_angles" in s:
+        inc = [r[0] for r in s["test4_rebound_angles"]]
+        reb = [r[1] for r in s["test4_rebound_angles"]]
+        mu, e = 0.092, 0.98  # scenes/dem/chung_ooi_test4.toml
+        limit = math.degrees(math.atan(3.5 * mu * (1 + e)))
+        fine = [limit + k * (89 - limit) / 100 for k in range(101)]
+        closed = [math.degrees(math.atan((math.tan(math.radians(a)) - 3.5 * mu * (1 + e)) / e)) for a in fine]
+        fig, ax = plt.subplots(figsize=(5.5, 4.2))
+        ax.plot(inc, reb, "o-", label="polymech (Hertz-Mindlin, 400 steps per contact)")
+        ax.plot(fine, closed, "k--", lw=1, label="gross sliding: tan r = (tan i - 3.5 mu (1+e)) / e")
+        ax.axhline(0, color="0.6", lw=0.5)
+        ax.set_xlabel("incidence angle (deg)")
+        ax.set_ylabel("rebound angle of the contact point (deg)")
+        ax.set_title("Chung & Ooi test 4: alumina sphere, 3.9 m/s")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "test4_rebound.png"), dpi=120)
+    if "test3_restitution" in s:
+        e_in = [r[0] for r in s["test3_restitution"]]
+        e_out = [r[1] for r in s["test3_restitution"]]
+        fig, ax = plt.subplots(figsize=(4.5, 4.2))
+        ax.plot([0, 1], [0, 1], "k--", lw=1, label="measured = input")
+        ax.plot(e_in, e_out, "o", label="polymech (beta calibrated on Hertz)")
+        ax.set_xlabel("coefficient of restitution, input")
+        ax.set_ylabel("coefficient of restitution, measured")
+        ax.set_title("Chung & Ooi test 3")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "test3_restitution.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    main()
