@@ -42,7 +42,7 @@ void stamp(const Pairs& p) {
   auto st = Kokkos::create_mirror_view(p.history().state);
   for (int i = 0; i < list.num_particles; ++i)
     for (auto k = off(i); k < off(i + 1); ++k) {
-      for (int c = 0; c < 3; ++c) val(k, c) = 1000.0 * i + nbr(k) + c;
+      for (int c = 0; c < static_cast<int>(val.extent(1)); ++c) val(k, c) = 1000.0 * i + nbr(k) + c;
       st(k) = i + 1;
     }
   Kokkos::deep_copy(p.history().values, val);
