@@ -71,6 +71,26 @@ class ContactPairs {
   const PairHistory<T, N>& history() const { return history_[current_]; }
   int builds() const { return builds_; }
 
+  // For a checkpoint (models/common/contact_pairs_archive.hpp): the positions of the last build, and
+  // restore(), which rebuilds the list from them (the same pairs in the same order, as the search is
+  // deterministic) and leaves the history of its entries to be filled by the caller.
+  const VecView<T, D>& queries_at_build() const { return queries_at_build_; }
+  const VecView<T, D>& points_at_build() const { return points_at_build_; }
+  bool between_sets() const { return between_; }
+  void restore(const VecView<T, D>& queries, const VecView<T, D>& points, bool between, int builds) {
+    queries_at_build_ = VecView<T, D>(label_ + "_queries_at_build", queries.extent(0));
+    points_at_build_ = VecView<T, D>(label_ + "_points_at_build", points.extent(0));
+    Kokkos::deep_copy(queries_at_build_, queries);
+    Kokkos::deep_copy(points_at_build_, points);
+    between_ = between;
+    if (between)
+      search_.build_between(queries_at_build_, points_at_build_, radius_ + skin_, lists_[current_]);
+    else
+      search_.build(queries_at_build_, radius_ + skin_, kind_, lists_[current_]);
+    if (keep_history_) history_[current_].resize(static_cast<std::size_t>(lists_[current_].num_pairs), label_ + "_history");
+    builds_ = builds;
+  }
+
  private:
   bool update_impl(const VecView<T, D>& queries, const VecView<T, D>& points, bool between) {
     const bool first = queries_at_build_.extent(0) != queries.extent(0) || points_at_build_.extent(0) != points.extent(0);
@@ -86,6 +106,7 @@ class ContactPairs {
     Kokkos::deep_copy(queries_at_build_, queries);
     Kokkos::deep_copy(points_at_build_, points);
     const int next = 1 - current_;
+    between_ = between;
     if (between)
       search_.build_between(queries, points, radius_ + skin_, lists_[next]);
     else
@@ -101,6 +122,7 @@ class ContactPairs {
   neighbors::ListKind kind_;
   std::string label_;
   bool keep_history_ = true;
+  bool between_ = false;
   neighbors::NeighborSearch<T, D> search_;
   neighbors::NeighborList lists_[2];
   PairHistory<T, N> history_[2];

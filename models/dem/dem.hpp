@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/contact_pairs_archive.hpp"
 #include "common/explicit_model.hpp"
 #include "common/particle_health.hpp"
 #include "common/run.hpp"
@@ -116,16 +117,22 @@ class Dem {
 
   models::Health health() const { return models::particle_health<T, 3>(s_); }
   const models::StateRegistry& state() const { return state_; }
-  // Checkpoints (models/common/run.hpp): the registered state and the step are written, but a restart
-  // is refused: the contact pairs' tangential springs (ContactPairs, double-buffered) are not yet in
-  // the checkpoint, and a restart without them would not continue the run.
+  // Checkpoints (models/common/run.hpp): the registered state, the step and both contact lists with
+  // the tangential springs of their pairs (models/common/contact_pairs_archive.hpp): a restarted run
+  // continues bit for bit.
   void save(models::Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
     a.put(prefix + "step", step_);
+    models::save_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
+    if (surfaces_) models::save_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
   }
-  void load(const models::Archive&, const std::string&) {
-    throw std::invalid_argument("dem: restart from a checkpoint is not supported yet (the tangential springs of the "
-                                "contact pairs are not in it)");
+  void load(const models::Archive& a, const std::string& prefix) {
+    state_.load(a, prefix + "state/");
+    step_ = a.get<std::int64_t>(prefix + "step");
+    models::load_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
+    if (surfaces_) models::load_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
+    current_positions(s_);
+    prepared_ = true;  // the accelerations of this state are part of it
   }
 
   // Host copy of sphere i (positions x0 + u).
@@ -251,7 +258,8 @@ class Dem {
     state_.add("alpha", s_.alpha);
     state_.add("plane_history", plane_history_);
     // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
-    // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md).
+    // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md), a
+    // checkpoint writes them with the lists (save()).
   }
 
   Config cfg_;
