@@ -38,6 +38,7 @@ DemScene load_dem_scene(const std::filesystem::path& file, const std::string& pr
   s.model.finish();
   out.header.set_accuracy(read_accuracy(root, "", 0.0, "paper"));
   const auto& fx = out.config.effects;
+  if (fx.has("clumps")) s.model.fail("effects", "lists \"clumps\", but an impact scene has spheres only (no clumps)");
 
   const SceneTable particle = root.table("particle");
   out.impact.particle = read_material(particle, false);

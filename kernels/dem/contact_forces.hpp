@@ -25,12 +25,13 @@ using PlaneView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
 
 namespace detail {
 
-// Adds one contact's force (and torque, about the centre; lever -r n) to sphere i.
+// Adds one contact's force (and torque about the centre, lever -l n: l = r for a wall, the distance to
+// the middle of the overlap for two spheres) to sphere i.
 template <class T>
-KOKKOS_INLINE_FUNCTION void add_contact(const SphereSet<T>& s, Index i, const Vec3<T>& n, T r_i, const Vec3<T>& f) {
+KOKKOS_INLINE_FUNCTION void add_contact(const SphereSet<T>& s, Index i, const Vec3<T>& n, T r_i, T lever, const Vec3<T>& f) {
   const T m = s.mass(i);
   const T inv_inertia = T(2.5) / (m * r_i * r_i);
-  const Vec3<T> torque = cross((-r_i) * n, f);
+  const Vec3<T> torque = cross((-lever) * n, f);
   for (int k = 0; k < 3; ++k) {
     s.a(i, k) += f[k] / m;
     s.alpha(i, k) += inv_inertia * torque[k];
@@ -48,12 +49,15 @@ KOKKOS_INLINE_FUNCTION Vec3<T> spring(const SpringView<T>& h, Offset k, bool fri
 template <class T>
 void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const SpringView<T>& hist,
                           const HertzMindlin<T>& p, bool friction, T dt) {
+  const bool clumped = s.body.extent(0) > 0;
   Kokkos::parallel_for(
       "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
+        const int body_i = clumped ? s.body(i) : -1;
         for (Offset k = list.begin(i); k < list.end(i); ++k) {
           const Index j = list.neighbor(k);
+          if (body_i >= 0 && s.body(j) == body_i) continue;  // two spheres of one clump
           const Vec3<T> d = xi_pos - load<3>(s.x, j);
           const T dist = norm(d), rj = s.radius(j);
           const T delta = ri + rj - dist;
@@ -62,12 +66,16 @@ void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& 
             continue;
           }
           const Vec3<T> n = (T(1) / dist) * d;  // from j to i
-          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), rj * n);
+          // Both ends act at one point, the middle of the overlap (levers r - delta / 2), so the pair's
+          // forces and torques conserve angular momentum exactly (with the lever r each, a tangential
+          // force would leave a couple delta n x f_t: what a clump's angular momentum then shows).
+          const T li = ri - T(0.5) * delta, lj = rj - T(0.5) * delta;
+          const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
           const T mj = s.mass(j);
           Vec3<T> xi = detail::spring(hist, k, friction);
           const auto c = hertz_mindlin_force(p, ri * rj / (ri + rj), mi * mj / (mi + mj), delta, n, v_rel, friction, dt, xi);
           if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, c.force);
+          detail::add_contact(s, i, n, ri, li, c.force);
         }
       });
 }
@@ -96,7 +104,7 @@ void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, cons
           Vec3<T> xi = detail::spring(hist, k, friction);
           const auto c = hertz_mindlin_force(p, ri, mi, delta, n, v_rel, friction, dt, xi);  // R* = r, m* = m
           if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, c.force);
+          detail::add_contact(s, i, n, ri, ri, c.force);
         }
       });
 }
@@ -149,7 +157,7 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
           }
           const auto f = hertz_mindlin_force(p, ri, mi, c[m].overlap, n, v_rel, friction, dt, xi);
           if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, f.force);
+          detail::add_contact(s, i, n, ri, ri, f.force);
         }
       });
 }

@@ -1,7 +1,8 @@
 // The spheres of a DEM model: the shared particle set (x0, u, v, a) with what a rotating sphere adds
 // (radius, mass, angular velocity and acceleration) and the current positions the broad phase bins.
 // The integrator is the shared velocity Verlet (particles::kick / drift) plus kick_rotation for the
-// spin; a sphere's orientation is not tracked (its contacts do not depend on it; clumps will add it).
+// spin; a sphere's orientation is not tracked (its contacts do not depend on it); a clump's is, in its rigid
+// body (kernels/dem/clumps.hpp).
 #pragma once
 
 #include <string>
@@ -16,6 +17,7 @@ struct SphereSet : particles::ParticleSet<T, 3> {
   VecView<T, 3> omega;  // angular velocity
   VecView<T, 3> alpha;  // angular acceleration (torque / I, I = 2/5 m r^2)
   VecView<T, 3> x;      // current positions x0 + u (current_positions())
+  View1<int> body;      // the clump of a member sphere, -1 for a free sphere (empty without clumps)
 };
 
 template <class T>

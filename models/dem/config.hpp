@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dem/clump_shapes.hpp"
 #include "effects.hpp"
 
 namespace polymech::dem {
@@ -33,6 +34,15 @@ struct SurfaceInit {
   bool empty() const { return facet_sizes.empty(); }
 };
 
+// A clump (the `clumps` effect): a rigid union of the spheres of one of Config::clump_shapes.
+struct ClumpInit {
+  int shape = 0;                                   // index into Config::clump_shapes
+  double scale = 1.0;                              // the shape's lengths times this (e.g. its bounding radius)
+  std::array<double, 3> position{};                // the centre of mass
+  std::array<double, 4> orientation{1, 0, 0, 0};   // quaternion (w, x, y, z): shape frame -> world
+  std::array<double, 3> velocity{}, omega{};       // of the centre of mass; angular velocity (world)
+};
+
 struct Config {
   Material particle;             // every sphere
   Material wall;                 // planes and FE surfaces
@@ -46,6 +56,9 @@ struct Config {
   std::vector<SphereInit> spheres;
   std::vector<PlaneInit> planes;
   SurfaceInit surface;           // the `fe_surfaces` effect
+  std::vector<ClumpShape> clump_shapes;  // the `clumps` effect
+  std::vector<ClumpInit> clumps;
+  int mass_columns = 200;        // columns across a shape for its mass properties (clump_shapes.hpp)
   EffectSet effects;
 };
 

@@ -26,6 +26,7 @@
 #include "contact/contact_pairs.hpp"
 #include "contact/surface_mesh.hpp"
 #include "dem/config.hpp"
+#include "dem/clumps.hpp"
 #include "dem/contact_forces.hpp"
 #include "dem/effect_table.hpp"
 #include "dem/setup.hpp"
@@ -50,8 +51,10 @@ class Dem {
         friction_(c.effects.has("friction")),
         damping_(c.effects.has("damping")),
         surfaces_(c.effects.has("fe_surfaces")),
-        pairs_(T(2 * max_radius(c)), T(skin(c)), neighbors::ListKind::full, "polymech::dem::sphere_pairs", friction_),
-        facet_pairs_(T(0), T(skin(c)), neighbors::ListKind::full, "polymech::dem::facet_pairs", friction_) {
+        clumps_(c.effects.has("clumps")),
+        clump_init_(c.clumps.empty() ? ClumpBodies{} : expand_clumps(c)),
+        pairs_(T(2 * max_radius(c, clump_init_)), T(skin(c, clump_init_)), neighbors::ListKind::full, "polymech::dem::sphere_pairs", friction_),
+        facet_pairs_(T(0), T(skin(c, clump_init_)), neighbors::ListKind::full, "polymech::dem::facet_pairs", friction_) {
     limit_ = time_step_limit(cfg_);
     if (cfg_.dt <= 0) cfg_.dt = cfg_.dt_safety * limit_.limit;
     if (cfg_.dt > limit_.limit)
@@ -63,6 +66,7 @@ class Dem {
     pp_ = law(p, p, beta, mu);
     pw_ = law(p, w, beta, mu);
     allocate_spheres();
+    if (clumps_) allocate_clumps();
     allocate_planes();
     if (surfaces_) allocate_surface();
     register_state();
@@ -80,12 +84,15 @@ class Dem {
     particles::kick<T, 3>(s_, T(0.5) * dt);
     kick_rotation(s_, T(0.5) * dt);
     particles::drift<T, 3>(s_, dt);
+    if (clumps_) {  // the members' own kick and drift above are overwritten by their clump's motion
+      clump_kick(clumps_set_, 0.5 * cfg_.dt);
+      clump_drift(clumps_set_, cfg_.dt);
+      clump_members(s_, clumps_set_, true);
+    }
   }
   void compute_forces() {
     current_positions(s_);
-    Vec3<T> g;  // named, not a braced list passed to the call (nvcc 11.8, docs/DEVELOPING.md)
-    for (int k = 0; k < 3; ++k) g[k] = T(cfg_.gravity[k]);
-    body_forces(s_, g);
+    body_forces(s_, gravity());
   }
   void observe() {}
   void add_contact_forces() {
@@ -97,11 +104,16 @@ class Dem {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt);
     }
+    if (clumps_) clump_loads(s_, clumps_set_, gravity());
   }
   void advance_second_half() {
     const T h = T(0.5) * T(cfg_.dt);
     particles::kick<T, 3>(s_, h);
     kick_rotation(s_, h);
+    if (clumps_) {
+      clump_kick(clumps_set_, 0.5 * cfg_.dt);
+      clump_members(s_, clumps_set_, false);
+    }
     ++step_;
   }
 
@@ -114,6 +126,14 @@ class Dem {
   const SphereSet<T>& spheres() const { return s_; }
   const contact::SurfaceMesh<T>& surface() const { return mesh_; }
   int sphere_list_builds() const { return pairs_.builds(); }
+  // Spheres: the free ones (Config::spheres) first, then the clumps' members in clump order.
+  Index sphere_count() const { return s_.size(); }
+  std::size_t clump_count() const { return clump_init_.bodies.size(); }
+  // Host copy of clump b's rigid body (pose, velocity, angular momentum, last loads).
+  rigid::RigidBody<3> clump(std::size_t b) const {
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), Kokkos::subview(clumps_set_.bodies, b));
+    return h();
+  }
 
   models::Health health() const { return models::particle_health<T, 3>(s_); }
   const models::StateRegistry& state() const { return state_; }
@@ -159,7 +179,7 @@ class Dem {
     for (int k = 0; k < 3; ++k) f2 += std::pow(m * (st.a[k] - cfg_.gravity[k]), 2);
     return std::sqrt(f2);
   }
-  // Translational + rotational kinetic energy (host sum).
+  // Translational + rotational kinetic energy of the free spheres and the clumps (host sum).
   double kinetic_energy() const {
     auto v = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.v);
     auto w = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.omega);
@@ -168,20 +188,31 @@ class Dem {
       const double r = cfg_.spheres[i].radius, m = cfg_.particle.density * 4.0 / 3.0 * kPi * r * r * r;
       for (int k = 0; k < 3; ++k) e += 0.5 * m * double(v(i, k)) * double(v(i, k)) + 0.2 * m * r * r * double(w(i, k)) * double(w(i, k));
     }
+    if (clumps_) {
+      auto b = Kokkos::create_mirror_view_and_copy(HostSpace(), clumps_set_.bodies);
+      for (std::size_t k = 0; k < b.extent(0); ++k) e += b(k).kinetic_energy();
+    }
     return e;
   }
 
  private:
-  static double max_radius(const Config& c) {
+  static double max_radius(const Config& c, const ClumpBodies& k) {
     double r = 0;
     for (const auto& s : c.spheres) r = std::max(r, s.radius);
+    for (const auto& s : k.members) r = std::max(r, s.radius);
     return r;
   }
-  static double skin(const Config& c) {
+  static double skin(const Config& c, const ClumpBodies& k) {
     if (c.skin > 0) return c.skin;
-    double r = max_radius(c);
+    double r = max_radius(c, k);
     for (const auto& s : c.spheres) r = std::min(r, s.radius);
+    for (const auto& s : k.members) r = std::min(r, s.radius);
     return 0.2 * r;
+  }
+  Vec3<T> gravity() const {
+    Vec3<T> g;  // named, not a braced list passed to a call (nvcc 11.8, docs/DEVELOPING.md)
+    for (int k = 0; k < 3; ++k) g[k] = T(cfg_.gravity[k]);
+    return g;
   }
   static HertzMindlin<T> law(const Material& a, const Material& b, double beta, double mu) {
     HertzMindlin<T> h;
@@ -192,7 +223,10 @@ class Dem {
     return h;
   }
   static void validate(const Config& c) {
-    if (c.spheres.empty()) throw std::invalid_argument("dem: no spheres");
+    if (c.spheres.empty() && c.clumps.empty()) throw std::invalid_argument("dem: no spheres and no clumps");
+    if (!c.clumps.empty() && !c.effects.has("clumps"))
+      throw std::invalid_argument("dem: clumps need the effect `clumps`");
+    if (c.effects.has("clumps") && c.clumps.empty()) throw std::invalid_argument("dem: effect clumps without clumps");
     for (const auto& s : c.spheres)
       if (!(s.radius > 0)) throw std::invalid_argument("dem: a sphere radius must be > 0");
     if (!(c.particle.young > 0) || !(c.particle.density > 0) || !(c.particle.poisson < 0.5))
@@ -204,7 +238,8 @@ class Dem {
   }
 
   void allocate_spheres() {
-    const Index n = static_cast<Index>(cfg_.spheres.size());
+    const std::size_t free = cfg_.spheres.size();
+    const Index n = static_cast<Index>(free + clump_init_.members.size());
     allocate(s_, n, "polymech::dem::");
     auto x0 = Kokkos::create_mirror_view(s_.x0);
     auto v = Kokkos::create_mirror_view(s_.v);
@@ -212,14 +247,17 @@ class Dem {
     auto r = Kokkos::create_mirror_view(s_.radius);
     auto m = Kokkos::create_mirror_view(s_.mass);
     for (Index i = 0; i < n; ++i) {
-      const auto& sp = cfg_.spheres[static_cast<std::size_t>(i)];
+      const auto u = static_cast<std::size_t>(i);
+      const auto& sp = u < free ? cfg_.spheres[u] : clump_init_.members[u - free];
       for (int k = 0; k < 3; ++k) {
         x0(i, k) = T(sp.position[k]);
         v(i, k) = T(sp.velocity[k]);
         w(i, k) = T(sp.omega[k]);
       }
       r(i) = T(sp.radius);
-      m(i) = T(cfg_.particle.density * 4.0 / 3.0 * kPi * sp.radius * sp.radius * sp.radius);
+      // a member carries its clump's mass (kernels/dem/clumps.hpp)
+      m(i) = T(u < free ? cfg_.particle.density * 4.0 / 3.0 * kPi * sp.radius * sp.radius * sp.radius
+                        : clump_init_.bodies[static_cast<std::size_t>(clump_init_.member_body[u - free])].mass);
     }
     Kokkos::deep_copy(s_.x0, x0);
     Kokkos::deep_copy(s_.v, v);
@@ -227,6 +265,48 @@ class Dem {
     Kokkos::deep_copy(s_.radius, r);
     Kokkos::deep_copy(s_.mass, m);
     Kokkos::deep_copy(s_.x, s_.x0);
+  }
+  void allocate_clumps() {
+    const auto& k = clump_init_;
+    const std::size_t free = cfg_.spheres.size(), nb = k.bodies.size(), nm = k.members.size();
+    clumps_set_.bodies = decltype(clumps_set_.bodies)("polymech::dem::clump_bodies", nb);
+    clumps_set_.first_member = Kokkos::View<Offset*, MemSpace>("polymech::dem::clump_first_member", nb + 1);
+    clumps_set_.members = Kokkos::View<Index*, MemSpace>("polymech::dem::clump_members", nm);
+    clumps_set_.offset = VecView<T, 3>("polymech::dem::clump_offset", free + nm);
+    s_.body = View1<int>("polymech::dem::body", free + nm);
+    auto bodies = Kokkos::create_mirror_view(clumps_set_.bodies);
+    auto first = Kokkos::create_mirror_view(clumps_set_.first_member);
+    auto members = Kokkos::create_mirror_view(clumps_set_.members);
+    auto offset = Kokkos::create_mirror_view(clumps_set_.offset);
+    auto body = Kokkos::create_mirror_view(s_.body);
+    for (std::size_t b = 0; b < nb; ++b) {
+      const auto& in = k.bodies[b];
+      rigid::RigidBody<3> rb;
+      rb.mass = in.mass;
+      for (int a = 0; a < 3; ++a) {
+        rb.inertia[a] = in.inertia[a];
+        rb.position[a] = in.position[a];
+        rb.velocity[a] = in.velocity[a];
+        rb.spin[a] = in.angular_momentum[a];
+      }
+      for (int a = 0; a < 4; ++a) rb.orientation[a] = in.orientation[a];
+      bodies(b) = rb;
+    }
+    for (std::size_t i = 0; i < free; ++i) body(i) = -1;
+    // members are stored clump after clump (expand_clumps), so the CSR is their running count
+    for (std::size_t j = 0; j < nm; ++j) {
+      const auto b = static_cast<std::size_t>(k.member_body[j]);
+      body(free + j) = static_cast<int>(b);
+      members(j) = static_cast<Index>(free + j);
+      first(b + 1) = static_cast<Offset>(j + 1);
+      for (int a = 0; a < 3; ++a) offset(free + j, a) = T(k.member_offset[j][a]);
+    }
+    for (std::size_t b = 0; b < nb; ++b) first(b + 1) = std::max(first(b + 1), first(b));
+    Kokkos::deep_copy(clumps_set_.bodies, bodies);
+    Kokkos::deep_copy(clumps_set_.first_member, first);
+    Kokkos::deep_copy(clumps_set_.members, members);
+    Kokkos::deep_copy(clumps_set_.offset, offset);
+    Kokkos::deep_copy(s_.body, body);
   }
   void allocate_planes() {
     if (cfg_.planes.empty()) return;
@@ -242,12 +322,12 @@ class Dem {
       }
     }
     Kokkos::deep_copy(planes_, h);
-    if (friction_) plane_history_ = SpringView<T>("polymech::dem::plane_history", cfg_.spheres.size() * cfg_.planes.size());
+    if (friction_) plane_history_ = SpringView<T>("polymech::dem::plane_history", static_cast<std::size_t>(s_.size()) * cfg_.planes.size());
   }
   void allocate_surface() {
     std::vector<Index> nodes(cfg_.surface.facet_nodes.begin(), cfg_.surface.facet_nodes.end());
     mesh_ = contact::make_surface_mesh<T>(cfg_.surface.nodes, cfg_.surface.facet_sizes, nodes, "polymech::dem::surface");
-    facet_pairs_ = Pairs(T(max_radius(cfg_)) + contact::max_facet_radius(mesh_), T(skin(cfg_)), neighbors::ListKind::full,
+    facet_pairs_ = Pairs(T(max_radius(cfg_, clump_init_)) + contact::max_facet_radius(mesh_), T(skin(cfg_, clump_init_)), neighbors::ListKind::full,
                          "polymech::dem::facet_pairs", friction_);
   }
   void register_state() {
@@ -257,14 +337,17 @@ class Dem {
     state_.add("omega", s_.omega);
     state_.add("alpha", s_.alpha);
     state_.add("plane_history", plane_history_);
+    state_.add("clump_bodies", clumps_set_.bodies);
     // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
     // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md), a
     // checkpoint writes them with the lists (save()).
   }
 
   Config cfg_;
-  bool friction_, damping_, surfaces_;
+  bool friction_, damping_, surfaces_, clumps_;
+  ClumpBodies clump_init_;
   Pairs pairs_, facet_pairs_;
+  ClumpSet<T> clumps_set_;
   TimeStepLimit limit_;
   HertzMindlin<T> pp_, pw_;
   SphereSet<T> s_;

@@ -18,6 +18,10 @@ inline const std::vector<EffectSpec>& effect_table() {
       {"fe_surfaces", "spheres against quadrilateral FE segments by the inside-outside algorithm (eqs. (1)-(10))", {},
        {"polymech::contact::facet_geometry", "polymech::dem::sphere_facet"},
        "the surface mesh (nodes, facets, centroids, normals) and a sphere-facet pair list"},
+      {"clumps", "multi-sphere particles: rigid unions of spheres with numerical mass and inertia (sec. 2)", {},
+       {"polymech::dem::clump_kick", "polymech::dem::clump_drift", "polymech::dem::clump_members",
+        "polymech::dem::clump_loads"},
+       "a rigid body per clump (~200 B), a body index and a body-frame offset per sphere"},
   };
   return specs;
 }

@@ -54,13 +54,22 @@ double hertz_damping_ratio(double restitution) {
   return 0.5 * (lo + hi);
 }
 
-TimeStepLimit time_step_limit(const Config& c) {
+TimeStepLimit time_step_limit(const Config& config) {
   TimeStepLimit t;
-  if (c.spheres.empty()) return t;
-  double r_min = c.spheres[0].radius, v_max = 0.0;
+  Config with_members;
+  const bool clumped = !config.clumps.empty();
+  if (clumped) {
+    with_members.spheres = config.spheres;
+    const auto members = expand_clumps(config).members;
+    with_members.spheres.insert(with_members.spheres.end(), members.begin(), members.end());
+  }
+  const auto& spheres = clumped ? with_members.spheres : config.spheres;
+  const Config& c = config;
+  if (spheres.empty()) return t;
+  double r_min = spheres[0].radius, v_max = 0.0;
   double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = c.spheres[0].position[k];
-  for (const auto& s : c.spheres) {
+  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = spheres[0].position[k];
+  for (const auto& s : spheres) {
     r_min = std::min(r_min, s.radius);
     double v2 = 0.0;
     for (int k = 0; k < 3; ++k) {

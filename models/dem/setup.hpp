@@ -2,7 +2,9 @@
 // limit of a configuration, and why.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "dem/config.hpp"
 #include "dem/effect_table.hpp"
@@ -25,6 +27,24 @@ struct TimeStepLimit {
 double hertz_damping_ratio(double restitution);
 // The restitution that beta gives on the damped Hertz law (the equation above, RK4).
 double hertz_restitution(double beta);
+
+// The clumps of a configuration as member spheres (world frame, after the free spheres in the model) and
+// rigid bodies: mass M = rho V s^3 and principal moments rho I s^5 of the union of the shape's spheres
+// (clump_shapes.hpp, computed once per shape), body axes along the principal axes, angular momentum
+// L = R I R^T omega. Throws std::invalid_argument for an unknown shape index or a bad scale.
+struct ClumpBodies {
+  struct Body {
+    double mass = 0.0;
+    std::array<double, 3> inertia{};                 // principal moments
+    std::array<double, 3> position{}, velocity{}, angular_momentum{};
+    std::array<double, 4> orientation{1, 0, 0, 0};   // body (principal) frame -> world
+  };
+  std::vector<Body> bodies;
+  std::vector<SphereInit> members;                    // world positions and velocities at the start
+  std::vector<int> member_body;                       // the body of each member
+  std::vector<std::array<double, 3>> member_offset;   // in the body frame
+};
+ClumpBodies expand_clumps(const Config& c);
 
 // The largest dt a configuration may run with (computed on the host from the configuration alone).
 TimeStepLimit time_step_limit(const Config& c);

@@ -32,6 +32,8 @@ TEST(DemEffects, NoEffectsLaunchesOnlyTheBaseKernelsAndAllocatesNoHistory) {
   run_steps(m, 20);
   EXPECT_TRUE(census.allocations_containing("history").empty());
   EXPECT_TRUE(census.allocations_containing("surface").empty());
+  EXPECT_TRUE(census.allocations_containing("clump").empty());
+  EXPECT_TRUE(census.allocations_containing("polymech::dem::body").empty());
   EXPECT_EQ(census.launches("polymech::contact::carry_history"), 0);
   EXPECT_EQ(census.launches("polymech::dem::sphere_facet"), 0);
   EXPECT_EQ(census.launches("polymech::contact::facet_geometry"), 0);
@@ -42,8 +44,14 @@ TEST(DemEffects, NoEffectsLaunchesOnlyTheBaseKernelsAndAllocatesNoHistory) {
 
 TEST(DemEffects, EveryEffectLaunchesItsKernelsAndAllocatesItsState) {
   pm::testing::KernelCensus census;
-  auto c = scene({"friction", "damping", "fe_surfaces"}, true);
+  auto c = scene({"friction", "damping", "fe_surfaces", "clumps"}, true);
   c.skin = 1e-5;  // rebuilds, so the history is carried
+  c.clump_shapes = dm::gravel_shapes();
+  dm::ClumpInit k;
+  k.shape = 2;
+  k.scale = 0.3;
+  k.position = {1.0, 1.0, 0.5};
+  c.clumps = {k};
   dm::Dem<double> m(c);
   run_steps(m, 20);
   for (const auto& spec : dm::effect_table())
@@ -51,10 +59,17 @@ TEST(DemEffects, EveryEffectLaunchesItsKernelsAndAllocatesItsState) {
   EXPECT_EQ(census.launches("polymech::dem::sphere_facet"), 21);
   EXPECT_FALSE(census.allocations_containing("sphere_pairs_history").empty());
   EXPECT_FALSE(census.allocations_containing("facet_pairs_history").empty());
+  EXPECT_FALSE(census.allocations_containing("clump_bodies").empty());
 }
 
 TEST(DemEffects, UnknownEffectAndSurfaceWithoutMeshAreErrors) {
-  EXPECT_THROW(pm::EffectSet::resolve({"clumps"}, dm::effect_table()), pm::EffectError);
+  EXPECT_THROW(pm::EffectSet::resolve({"rolling_resistance"}, dm::effect_table()), pm::EffectError);
   auto c = scene({"fe_surfaces"}, false);
   EXPECT_THROW(dm::Dem<double> m(c), std::invalid_argument);
+  auto no_clumps = scene({"clumps"}, false);
+  EXPECT_THROW(dm::Dem<double> m(no_clumps), std::invalid_argument);
+  auto no_effect = scene({}, false);
+  no_effect.clump_shapes = dm::gravel_shapes();
+  no_effect.clumps.resize(1);
+  EXPECT_THROW(dm::Dem<double> m(no_effect), std::invalid_argument);
 }

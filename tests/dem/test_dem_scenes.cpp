@@ -82,8 +82,10 @@ TEST(DemScenes, ValuesThatNeedAnEffectAreRefused) {
   expect_error(replace_once(kBase, "restitution = 1.0", "restitution = 1.0\nfriction = 0.3"), "friction = 0.3",
                {"friction"});
   expect_error(replace_once(kBase, "target = \"plane\"", "target = \"mesh\""), "target = \"mesh\"", {"fe_surfaces"});
+  expect_error(replace_once(kBase, "effects = []", "effects = [\"rolling\"]"), "effects = [\"rolling\"]",
+               {"unknown effect", "friction, damping, fe_surfaces, clumps"});
   expect_error(replace_once(kBase, "effects = []", "effects = [\"clumps\"]"), "effects = [\"clumps\"]",
-               {"unknown effect", "friction, damping, fe_surfaces"});
+               {"clumps", "impact"});
 }
 
 TEST(DemScenes, ImplausibleValuesAreRefused) {
