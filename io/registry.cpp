@@ -1,5 +1,6 @@
 #include "io/registry.hpp"
 
+#include "io/dem_pour_scene.hpp"
 #include "io/dem_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
@@ -37,6 +38,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_dem_scene(f); },
        [](const std::filesystem::path&) { return std::string("dem_benchmark"); },
        [](const std::filesystem::path& f) { return load_dem_scene(f).cost; }},
+      {"dem_pour", "DEM gravel (multi-sphere clumps or spheres) poured into a bin (seed 002 paper 2)", {"dem_pour"},
+       [](const std::filesystem::path& f) { load_dem_pour_scene(f); },
+       [](const std::filesystem::path&) { return std::string("dem_pour"); },
+       [](const std::filesystem::path& f) { return load_dem_pour_scene(f).cost; }},
   };
   return kinds;
 }

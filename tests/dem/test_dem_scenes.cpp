@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <string>
 
+#include "io/dem_pour_scene.hpp"
 #include "io/dem_scene.hpp"
+#include "io/registry.hpp"
 #include "support/error_messages.hpp"
 
 namespace fs = std::filesystem;
@@ -51,15 +53,24 @@ void expect_error(const std::string& text, const std::string& at, const std::vec
 TEST(DemScenes, EveryShippedSceneLoads) {
   const char* src = std::getenv("POLYMECH_SOURCE_DIR");
   ASSERT_NE(src, nullptr);
-  int n = 0;
+  int n = 0, pours = 0;
   for (const auto& e : fs::directory_iterator(fs::path(src) / "scenes" / "dem")) {
     if (e.path().extension() != ".toml") continue;
+    if (io::scene_kind_of(e.path()).kind == "dem_pour") {
+      const auto p = io::load_dem_pour_scene(e.path());
+      EXPECT_GT(p.config.dt, 0.0) << e.path();
+      EXPECT_LE(p.config.dt, p.limit.limit) << e.path();
+      EXPECT_EQ(static_cast<int>(p.config.spheres.size() + p.config.clumps.size()), p.pour.count) << e.path();
+      ++pours;
+      continue;
+    }
     const auto s = io::load_dem_scene(e.path());
     EXPECT_GT(s.config.dt, 0.0) << e.path();
     EXPECT_LE(s.config.dt, s.limit.limit) << e.path();
     ++n;
   }
   EXPECT_GE(n, 5);
+  EXPECT_GE(pours, 2);
 }
 
 TEST(DemScenes, BaseLoadsWithTheHertzStep) {

@@ -1,0 +1,189 @@
+// Gravel poured into a bin (seed 002 paper 2, sec. 2 and Fig. 6: multi-sphere gravel particles of
+// radii 5-7 mm fill the soil bin before the tyre runs on it): the particles drop from a lattice, settle,
+// and the bed's packing fraction is measured.
+//   dem_pour [--scene scenes/dem/gravel_pour.toml] [--out out/dem_pour] [--accuracy draft|standard|paper]
+//            [--steps N] [--restart OUT] [--checkpoint-every S] [--lammps-data FILE]
+// Writes summary.json (packing_fraction, bed_height, particles, spheres, clumps, steps, wall_seconds,
+// sphere_steps_per_second, final kinetic energy, run record), energy.csv (time, kinetic energy, mean
+// and top particle height) and fields.h5 + fields.xdmf (ParaView: displacement from the start,
+// velocity, radius, clump). --lammps-data writes the initial particles as a LAMMPS/LIGGGHTS data file
+// (atom_style sphere; spheres only) for the side-by-side run of bench/peers/liggghts.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
+#include "dem/dem.hpp"
+#include "io/dem_pour_scene.hpp"
+#include "io/progress.hpp"
+
+namespace pm = polymech;
+namespace dm = polymech::dem;
+
+namespace {
+
+std::vector<std::array<double, 4>> sphere_rows(const dm::Dem<double>& m) {
+  const auto& s = m.spheres();
+  auto x0 = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.x0);
+  auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
+  auto r = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.radius);
+  std::vector<std::array<double, 4>> rows(static_cast<std::size_t>(s.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = {x0(i, 0) + u(i, 0), x0(i, 1) + u(i, 1), x0(i, 2) + u(i, 2), r(i)};
+  return rows;
+}
+
+void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, const dm::PourSpec& p) {
+  if (!c.clumps.empty()) throw std::invalid_argument("--lammps-data: the scene has clumps; the peer run takes spheres only");
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+  out.precision(17);
+  out << "polymech dem_pour initial particles (atom_style sphere: id type diameter density x y z)\n\n"
+      << c.spheres.size() << " atoms\n1 atom types\n\n0 " << p.bin[0] << " xlo xhi\n0 " << p.bin[1] << " ylo yhi\n0 "
+      << std::max(p.bin[2], dm::pour_top(p) + 2 * p.radius_max) << " zlo zhi\n\nAtoms\n\n";
+  for (std::size_t i = 0; i < c.spheres.size(); ++i) {
+    const auto& s = c.spheres[i];
+    out << i + 1 << " 1 " << 2 * s.radius << " " << c.particle.density << " " << s.position[0] << " " << s.position[1] << " "
+        << s.position[2] << "\n";
+  }
+}
+
+int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt,
+             const std::string& lammps_data, const std::string& argv0) {
+  const dm::Config& c = scene.config;
+  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.duration / c.dt));
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("dem_pour", scene.header, steps, ""));
+  pm::io::make_output_dir(opt.out);
+  if (!lammps_data.empty()) write_lammps_data(lammps_data, c, scene.pour);
+  dm::Dem<double> model(c);
+  const auto spheres = model.sphere_count();
+  std::fprintf(stderr,
+               "[dem_pour] %s\n  accuracy %s: %d particles (%zu clumps, %lld spheres), radii %.3g-%.3g m, bin %.3g x %.3g x %.3g m\n"
+               "  dt = %.3g s (limit %s), %lld steps to %.3g s, %d threads\n",
+               scene.header.title.c_str(), scene.header.accuracy.c_str(), scene.pour.count, model.clump_count(),
+               static_cast<long long>(spheres), scene.pour.radius_min, scene.pour.radius_max, scene.pour.bin[0], scene.pour.bin[1],
+               scene.pour.bin[2], c.dt, model.limit().describe().c_str(), static_cast<long long>(steps), steps * c.dt,
+               pm::kx::concurrency<pm::ExecSpace>());
+
+  pm::io::SnapshotMesh mesh;
+  mesh.dim = 3;
+  std::vector<double> radius, clump;
+  for (const auto& row : sphere_rows(model)) {
+    mesh.points.insert(mesh.points.end(), row.begin(), row.begin() + 3);
+    radius.push_back(row[3]);
+  }
+  clump.assign(static_cast<std::size_t>(spheres), -1.0);
+  for (std::size_t i = c.spheres.size(), b = 0, k = 0; i < clump.size(); ++i) {  // members, clump after clump
+    clump[i] = double(b);
+    if (++k == c.clump_shapes[static_cast<std::size_t>(c.clumps[b].shape)].spheres.size()) {
+      k = 0;
+      ++b;
+    }
+  }
+  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
+  auto snapshot = [&](std::int64_t step) {
+    const auto& s = model.spheres();
+    auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
+    auto v = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.v);
+    std::vector<double> hu(u.data(), u.data() + u.size()), hv(v.data(), v.data() + v.size());
+    snapshots.add(step, model.time(), {{"displacement", 3, hu}, {"velocity", 3, hv}, {"radius", 1, radius}, {"clump", 1, clump}});
+  };
+  std::vector<std::vector<double>> series(4);  // time, kinetic, mean height, top height
+  auto sample = [&](std::int64_t) {
+    const auto rows = sphere_rows(model);
+    double mean = 0, top = 0;
+    for (const auto& r : rows) {
+      mean += r[2];
+      top = std::max(top, r[2] + r[3]);
+    }
+    series[0].push_back(model.time());
+    series[1].push_back(model.kinetic_energy());
+    series[2].push_back(mean / double(rows.size()));
+    series[3].push_back(top);
+  };
+
+  pm::io::Progress progress("dem_pour", steps, c.dt, !opt.quiet);
+  pm::models::RunHooks hooks;
+  hooks.after_step = [&](std::int64_t k) { progress.update(k); };
+  hooks.sample_every = scene.sample_every;
+  hooks.sample_at_start = true;
+  hooks.sample = sample;
+  hooks.snapshot_every = scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0;
+  hooks.snapshot = snapshot;
+  hooks.watchdog.keep_last_good = true;
+  checkpoints.attach(hooks, [&](pm::models::Archive& a) {
+    snapshots.save(a);
+    a.put_columns("dem_pour/series", series);
+  }, opt.quiet);
+  if (hooks.resume) {
+    snapshots.resume(*hooks.resume);
+    series = hooks.resume->get_columns<double>("dem_pour/series");
+    hooks.sample_at_start = false;
+    progress.resume_at(checkpoints.resume_step());
+  }
+  const auto stats = pm::models::run(model, steps - checkpoints.resume_step(), hooks);
+  progress.done(stats.steps);
+  if (stats.diverged)
+    std::fprintf(stderr, "[dem_pour] the run diverged at step %lld: %s; the last good state (step %lld) is the last snapshot\n",
+                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step));
+
+  const auto rows = sphere_rows(model);
+  std::array<double, 3> lo{}, hi{};
+  dm::bed_box(rows, scene.pour, lo, hi);
+  const bool bed = hi[2] > lo[2];  // a bed thicker than 2 radius_max (not at draft accuracy on a wide bin)
+  const double phi = bed ? dm::packing_fraction(rows, lo, hi, 80) : NAN;
+  pm::io::write_csv(opt.out / "energy.csv", {"time", "kinetic_energy", "mean_height", "top_height"}, series);
+  const auto xdmf = snapshots.finish();
+
+  nlohmann::json j = pm::apps::summary_header("dem_pour", scene.header);
+  j["command"] = argv0;
+  pm::apps::put_run_record(j, stats);
+  j["packing_fraction"] = bed ? nlohmann::json(phi) : nlohmann::json(nullptr);
+  if (!bed) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
+  j["bed_box"] = {{"lo", lo}, {"hi", hi}};
+  j["bed_height"] = hi[2] + scene.pour.radius_max;
+  j["particles"] = scene.pour.count;
+  j["clumps"] = model.clump_count();
+  j["spheres"] = spheres;
+  j["shapes"] = scene.pour.shapes;
+  j["dt"] = c.dt;
+  j["time_step_limit"] = model.limit().limit;
+  j["steps"] = stats.steps;
+  j["simulated_time"] = model.time();
+  j["final_kinetic_energy"] = model.kinetic_energy();
+  j["wall_seconds"] = stats.wall_seconds;
+  j["sphere_steps_per_second"] = stats.wall_seconds > 0 ? double(spheres) * double(stats.steps - checkpoints.resume_step()) / stats.wall_seconds : 0.0;
+  j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
+  j["sphere_list_builds"] = model.sphere_list_builds();
+  j["files"] = {"summary.json", "energy.csv", "fields.h5", xdmf.filename().string()};
+  pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
+  std::printf("%d particles (%lld spheres) poured in %.3f s simulated: packing fraction %.4f in [%.3g, %.3g] x [%.3g, %.3g] x "
+              "[%.3g, %.3g] m, kinetic energy %.3g J; wall %.1f s (%.3g sphere-steps/s)\n",
+              scene.pour.count, static_cast<long long>(spheres), model.time(), phi, lo[0], hi[0], lo[1], hi[1], lo[2], hi[2],
+              model.kinetic_energy(), stats.wall_seconds, double(j["sphere_steps_per_second"]));
+  std::printf("results in %s: summary.json, energy.csv, %s (open in ParaView)\n", opt.out.c_str(), xdmf.filename().c_str());
+  return stats.diverged ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Gravel poured into a bin: multi-sphere DEM (seed 002 paper 2)"};
+  pm::apps::CommonOptions opt;
+  pm::apps::add_common_options(app, opt, "scenes/dem/gravel_pour.toml", "out/dem_pour");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
+  std::string lammps_data;
+  app.add_option("--lammps-data", lammps_data, "also write the initial spheres as a LAMMPS/LIGGGHTS data file");
+  CLI11_PARSE(app, argc, argv);
+  std::string command;
+  for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
+  return pm::apps::guarded("dem_pour", [&] {
+    pm::apps::KokkosSession kokkos(opt.threads);
+    const auto scene = pm::io::load_dem_pour_scene(opt.scene, opt.accuracy, opt.precision);
+    if (pm::apps::announce_cost("dem_pour", scene.header, scene.cost, opt)) return 0;
+    return run_case(scene, opt, ropt, lammps_data, command);
+  });
+}

@@ -1,0 +1,116 @@
+#include "io/dem_pour_scene.hpp"
+
+#include <cmath>
+
+#include "io/ranges.hpp"
+
+namespace polymech::io {
+
+namespace pl = polymech::io::plausible;
+
+DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::string& accuracy,
+                                 const std::string& precision) {
+  DemPourScene out;
+  const OpenScene s = open_scene(file, "dem_pour", dem::effect_table(), precision, out);
+  const SceneTable& root = s.root;
+  s.model.finish();
+  if (out.header.precision == "float")
+    s.model.fail("precision", "= \"float\": a pour runs in double precision (the clumps' poses and loads are double)");
+  out.header.set_accuracy(read_accuracy(root, accuracy, 0.0, "paper"));
+  const auto& fx = out.config.effects;
+  dem::Config& c = out.config;
+
+  const SceneTable particle = root.table("particle");
+  c.particle.young = particle.real("youngs_modulus", pl::modulus());
+  c.particle.poisson = particle.real("poisson_ratio", Range{-1.0, 0.5, true, true});
+  c.particle.density = particle.real("density", pl::density());
+  particle.finish();
+  const SceneTable wall = root.table("wall");
+  c.wall.young = wall.real("youngs_modulus", pl::modulus());
+  c.wall.poisson = wall.real("poisson_ratio", Range{-1.0, 0.5, true, true});
+  wall.finish();
+
+  const SceneTable contact = root.table("contact");
+  c.restitution = contact.real("restitution", 1.0, Range{1e-3, 1.0, false, false, "(1: elastic)"});
+  c.friction = contact.real("friction", 0.0, pl::factor(0.0, 10.0));
+  if (c.restitution < 1.0 && !fx.has("damping")) contact.fail("restitution", "< 1 needs the effect \"damping\" in model.effects");
+  if (c.friction > 0 && !fx.has("friction")) contact.fail("friction", "> 0 needs the effect \"friction\" in model.effects");
+  contact.finish();
+  if (fx.has("fe_surfaces")) s.model.fail("effects", "lists \"fe_surfaces\", but a pour has no FE surface (the bin is planes)");
+
+  const SceneTable gravel = root.table("gravel");
+  auto& p = out.pour;
+  const std::int64_t count = gravel.integer("count", 1, 10000000);
+  p.shapes = gravel.strings("shapes", {"cylinder", "cone", "cube"});
+  if (p.shapes.empty()) gravel.fail("shapes", "is empty; give one or more of \"cylinder\", \"cone\", \"cube\", \"sphere\"");
+  bool clumps = false;
+  for (const auto& name : p.shapes) {
+    if (name != "cylinder" && name != "cone" && name != "cube" && name != "sphere")
+      gravel.fail("shapes", "has \"" + name + "\"; allowed: \"cylinder\", \"cone\", \"cube\" (the paper's gravel) or \"sphere\"");
+    clumps = clumps || name != "sphere";
+  }
+  if (clumps && !fx.has("clumps")) gravel.fail("shapes", "names multi-sphere shapes; they need the effect \"clumps\" in model.effects");
+  if (!clumps && fx.has("clumps")) s.model.fail("effects", "lists \"clumps\", but gravel.shapes has spheres only");
+  p.radius_min = gravel.real("radius_min", Range{1e-6, 10.0, false, false, "m (a particle's bounding radius)"});
+  p.radius_max = gravel.real("radius_max", Range{1e-6, 10.0, false, false, "m (a particle's bounding radius)"});
+  if (p.radius_max < p.radius_min) gravel.fail("radius_max", "is smaller than radius_min = " + format_number(p.radius_min));
+  p.seed = static_cast<std::uint64_t>(gravel.integer("seed", 1, 0, std::int64_t(1) << 62));
+  // the accuracy preset divides the count (draft: / 4, standard: / 2; a sweep's factor likewise)
+  p.count = static_cast<int>(std::max<std::int64_t>(1, std::llround(double(count) / out.header.coarsening)));
+  gravel.finish();
+
+  const SceneTable bin = root.table("bin");
+  const auto size = bin.reals("size", pl::length());
+  if (size.size() != 3) bin.fail("size", "must be [lx, ly, lz] (3 lengths), got " + std::to_string(size.size()));
+  p.bin = {size[0], size[1], size[2]};
+  if (p.bin[0] < 2.2 * p.radius_max || p.bin[1] < 2.2 * p.radius_max)
+    bin.fail("size", "is narrower than one particle (2.2 x gravel.radius_max = " + format_number(2.2 * p.radius_max) + " m)");
+  bin.finish();
+
+  const SceneTable time = root.table("time");
+  out.duration = time.real("duration", pl::duration());
+  const double dt = time.real("dt", 0.0, Range{0.0, pl::time_step().hi, false, false, "s (0: dt_safety x the limit)"});
+  c.dt_safety = time.real("dt_safety", 0.5, Range{0.01, 1.0, false, false, "(a fraction of the time-step limit)"});
+  time.finish();
+  c.gravity = {0, 0, -9.81};
+  if (const auto g = root.optional_table("gravity")) {
+    const auto v = g->reals("vector", Range{-1e3, 1e3, false, false, "m/s^2"});
+    if (v.size() != 3) g->fail("vector", "must be [gx, gy, gz]");
+    c.gravity = {v[0], v[1], v[2]};
+    g->finish();
+  }
+  if (const auto o = root.optional_table("output")) {
+    out.snapshots = static_cast<int>(o->integer("snapshots", 10, 0, 10000));
+    out.sample_every = o->integer("sample_every", 0, 0, std::int64_t(1) << 30);
+    o->finish();
+  } else {
+    out.snapshots = 10;
+  }
+  root.finish();
+
+  try {
+    const auto pour = dem::pour_config(c, p);
+    const double top = dem::pour_top(p);
+    if (top > 10 * p.bin[2])
+      bin.fail("size", "holds " + std::to_string(p.count) + " particles in layers up to z = " + format_number(top) +
+                           " m, more than 10 x its height; widen the bin or pour fewer");
+    const auto limit = dem::time_step_limit(pour);
+    out.limit = limit;
+    if (!(limit.limit > 0) || !std::isfinite(limit.limit)) particle.fail("youngs_modulus", "gives no finite time-step limit");
+    c = pour;
+    c.dt = dt > 0 ? dt : c.dt_safety * limit.limit;
+    if (c.dt > limit.limit) time.fail("dt", "= " + format_number(c.dt) + " s is above the limit " + limit.describe());
+  } catch (const std::invalid_argument& e) {
+    gravel.fail("count", e.what());
+  }
+  const double spheres_per_particle = p.shapes.size() == 1 && p.shapes[0] == "sphere" ? 1.0 : 5.0;
+  out.cost = dem_cost(spheres_per_particle * p.count, std::ceil(out.duration / c.dt));
+  out.cost.size_keys = {"gravel.count = " + std::to_string(count) + " (" + std::to_string(p.count) + " at accuracy '" +
+                            out.header.accuracy + "')",
+                        "time.duration = " + format_number(out.duration) + " s", "dt = " + format_number(c.dt) + " s"};
+  check_size(out.cost, gravel);
+  if (out.sample_every == 0) out.sample_every = std::max<std::int64_t>(1, static_cast<std::int64_t>(out.cost.steps / 200));
+  return out;
+}
+
+}  // namespace polymech::io
