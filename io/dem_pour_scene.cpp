@@ -63,12 +63,15 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
   const auto size = bin.reals("size", pl::length());
   if (size.size() != 3) bin.fail("size", "must be [lx, ly, lz] (3 lengths), got " + std::to_string(size.size()));
   p.bin = {size[0], size[1], size[2]};
+  p.release_at = bin.real("release_at", 0.0, Range{0.0, 1e3, false, false, "s (0: the bin stays closed; > 0: its wall x = lx opens then, a heap forms)"});
   if (p.bin[0] < 2.2 * p.radius_max || p.bin[1] < 2.2 * p.radius_max)
     bin.fail("size", "is narrower than one particle (2.2 x gravel.radius_max = " + format_number(2.2 * p.radius_max) + " m)");
   bin.finish();
 
   const SceneTable time = root.table("time");
   out.duration = time.real("duration", pl::duration());
+  if (p.release_at > 0 && p.release_at >= out.duration)
+    bin.fail("release_at", "= " + format_number(p.release_at) + " s is not before time.duration = " + format_number(out.duration) + " s");
   const double dt = time.real("dt", 0.0, Range{0.0, pl::time_step().hi, false, false, "s (0: dt_safety x the limit)"});
   c.dt_safety = time.real("dt_safety", 0.5, Range{0.01, 1.0, false, false, "(a fraction of the time-step limit)"});
   time.finish();

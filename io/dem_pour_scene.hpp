@@ -7,7 +7,8 @@
 //   [particle] youngs_modulus, poisson_ratio, density     [wall] youngs_modulus, poisson_ratio
 //   [contact] restitution, friction
 //   [gravel] count, shapes = ["cylinder", "cone", "cube"] (or ["sphere"]), radius_min, radius_max, seed
-//   [bin] size = [lx, ly, lz]           [time] duration, dt (0: dt_safety x the limit), dt_safety
+//   [bin] size = [lx, ly, lz], release_at (s; > 0: the wall x = lx opens, a heap forms)
+//   [time] duration, dt (0: dt_safety x the limit), dt_safety
 //   [output] snapshots, sample_every    [accuracy] default = "paper" (draft: count / 4, standard: / 2)
 #pragma once
 

@@ -105,7 +105,13 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
 
   pm::io::Progress progress("dem_pour", steps, c.dt, !opt.quiet);
   pm::models::RunHooks hooks;
-  hooks.after_step = [&](std::int64_t k) { progress.update(k); };
+  // the heap: the wall x = lx opens at release_at (moved far behind the spheres; planes are state, so a
+  // restart after the release keeps it open)
+  const auto release_step = scene.pour.release_at > 0 ? static_cast<std::int64_t>(std::llround(scene.pour.release_at / c.dt)) : -1;
+  hooks.after_step = [&](std::int64_t k) {
+    progress.update(k);
+    if (k == release_step) model.move_plane(dm::kReleaseWall, {1e3, 0.0, 0.0});
+  };
   hooks.sample_every = scene.sample_every;
   hooks.sample_at_start = true;
   hooks.sample = sample;
@@ -139,6 +145,19 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
   nlohmann::json j = pm::apps::summary_header("dem_pour", scene.header);
   j["command"] = argv0;
   pm::apps::put_run_record(j, stats);
+  if (scene.pour.release_at > 0) {  // a heap: its angle, not a bed
+    std::vector<std::array<double, 2>> profile;
+    const double angle = dm::repose_angle(rows, scene.pour, &profile);
+    std::vector<std::vector<double>> cols(2);
+    for (const auto& p : profile) {
+      cols[0].push_back(p[0]);
+      cols[1].push_back(p[1]);
+    }
+    pm::io::write_csv(opt.out / "heap_profile.csv", {"x", "surface_height"}, cols);
+    j["repose_angle_deg"] = std::isfinite(angle) ? nlohmann::json(angle) : nlohmann::json(nullptr);
+    j["release_at"] = scene.pour.release_at;
+    std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, angle);
+  }
   j["packing_fraction"] = bed ? nlohmann::json(phi) : nlohmann::json(nullptr);
   if (!bed) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
   j["bed_box"] = {{"lo", lo}, {"hi", hi}};

@@ -126,6 +126,13 @@ class Dem {
   const SphereSet<T>& spheres() const { return s_; }
   const contact::SurfaceMesh<T>& surface() const { return mesh_; }
   int sphere_list_builds() const { return pairs_.builds(); }
+  // Moves plane q to pass through `point` (its normal kept): a wall that opens (the heap's release)
+  // is moved far behind the spheres. The planes are part of the state, so a restart keeps the move.
+  void move_plane(std::size_t q, const std::array<double, 3>& point) {
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), planes_);
+    for (int k = 0; k < 3; ++k) h(q, k) = T(point[k]);
+    Kokkos::deep_copy(planes_, h);
+  }
   // Spheres: the free ones (Config::spheres) first, then the clumps' members in clump order.
   Index sphere_count() const { return s_.size(); }
   std::size_t clump_count() const { return clump_init_.bodies.size(); }
@@ -337,6 +344,7 @@ class Dem {
     state_.add("omega", s_.omega);
     state_.add("alpha", s_.alpha);
     state_.add("plane_history", plane_history_);
+    state_.add("planes", planes_);
     state_.add("clump_bodies", clumps_set_.bodies);
     // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
     // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md), a

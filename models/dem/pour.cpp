@@ -152,4 +152,34 @@ void bed_box(const std::vector<std::array<double, 4>>& spheres, const PourSpec& 
   hi = {spec.bin[0] - m, spec.bin[1] - m, top - m};
 }
 
+double repose_angle(const std::vector<std::array<double, 4>>& spheres, const PourSpec& spec,
+                    std::vector<std::array<double, 2>>* profile) {
+  const double w = 2 * spec.radius_max;
+  double x_max = 0;
+  for (const auto& s : spheres) x_max = std::max(x_max, s[0]);
+  const int bins = std::max(1, static_cast<int>(std::ceil(x_max / w)));
+  std::vector<double> h(static_cast<std::size_t>(bins), 0.0);
+  for (const auto& s : spheres) {
+    if (s[0] < 0 || s[1] < 0.25 * spec.bin[1] || s[1] > 0.75 * spec.bin[1]) continue;
+    const auto b = static_cast<std::size_t>(std::min(bins - 1, static_cast<int>(s[0] / w)));
+    h[b] = std::max(h[b], s[2] + s[3]);
+  }
+  const double top = *std::max_element(h.begin(), h.end());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (int b = 0; b < bins; ++b) {
+    const double x = (b + 0.5) * w, y = h[static_cast<std::size_t>(b)];
+    if (profile) profile->push_back({x, y});
+    if (y < 0.2 * top || y > 0.8 * top) continue;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+    ++n;
+  }
+  if (n < 3) return std::nan("");
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  return std::atan(-slope) * 180.0 / 3.14159265358979323846;
+}
+
 }  // namespace polymech::dem

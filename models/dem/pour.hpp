@@ -18,7 +18,18 @@ struct PourSpec {
   std::vector<std::string> shapes;     // names of gravel_shapes() ("cylinder", "cone", "cube") or "sphere"
   double radius_min = 0.0, radius_max = 0.0;  // a particle's bounding radius, uniform in [min, max]
   std::uint64_t seed = 1;
+  double release_at = 0.0;             // > 0: the wall x = lx (plane 2) opens at this time: a heap forms
 };
+
+// The plane index of the wall x = lx in pour_config's bin (the wall a heap's release opens).
+inline constexpr std::size_t kReleaseWall = 2;
+
+// The angle of repose of a heap against the wall x = 0: the surface height h(x) (highest sphere top
+// in bins of width 2 radius_max, over the middle half of the bin in y), a least-squares line through
+// the bins whose height lies between 20 % and 80 % of the highest bin's, angle = atan(-slope) in
+// degrees. profile gets the (x, h) rows. NaN when fewer than three bins are in that band.
+double repose_angle(const std::vector<std::array<double, 4>>& spheres, const PourSpec& spec,
+                    std::vector<std::array<double, 2>>* profile = nullptr);
 
 // `base` (materials, contact, gravity, effects, dt) with the bin's five planes and `count` particles on
 // a lattice above the floor (spacing 2.2 radius_max, layer after layer), each of a shape drawn in turn

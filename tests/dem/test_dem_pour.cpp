@@ -70,3 +70,21 @@ TEST(DemPour, ThreeShapesSettleIntoABedInsideTheBin) {
   std::printf("72 clumps: top centre %.4f m (dropped from up to %.4f m), packing fraction %.3f in z [%.4f, %.4f] m\n", z_max, top,
               phi, lo[2], hi[2]);
 }
+
+// The angle-of-repose measure on a synthetic heap: spheres filling the region under a 30-degree slope
+// against the wall x = 0.
+TEST(DemPour, ReposeAngleOfASyntheticThirtyDegreeHeap) {
+  dm::PourSpec spec;
+  spec.bin = {0.1, 0.1, 0.1};
+  spec.radius_min = spec.radius_max = 0.002;
+  const double r = 0.002, tan30 = std::tan(std::acos(-1.0) / 6), h0 = 0.06;
+  std::vector<std::array<double, 4>> spheres;
+  for (double x = r; x < 0.2; x += 2 * r)
+    for (double y = r; y < 0.1; y += 2 * r)
+      for (double z = r; z < h0 - x * tan30; z += 2 * r) spheres.push_back({x, y, z, r});
+  std::vector<std::array<double, 2>> profile;
+  const double angle = dm::repose_angle(spheres, spec, &profile);
+  EXPECT_NEAR(angle, 30.0, 1.5);
+  EXPECT_GT(profile.size(), 10u);
+  EXPECT_TRUE(std::isnan(dm::repose_angle({{0.01, 0.05, 0.01, r}}, spec)));
+}
