@@ -1,0 +1,402 @@
+// Element-free Galerkin model of a cracked plate (seed 004, Hagihara et al.), 2D, unit thickness.
+//
+// Nodes, support radii, background cells with Gauss points and boundary points come from
+// efg::make_layout (setup.hpp, Kokkos-free). Shape functions are MLS (kernels/mls) at every point, the
+// nodes of each point found by the two-set neighbour search (points against nodes) and cut by the
+// crack (visibility criterion). The stiffness of eq. (8) is assembled by a Kokkos kernel into a block
+// CSR pattern (nodes whose supports overlap) and solved by a sparse LDL^T factorisation (Eigen);
+// essential conditions by penalty (alpha = penalty x E, on points or boundary Gauss points). The
+// J-integral is taken on circles around the tip (20 arcs x 4 Gauss points, eq. (13) without the inertia
+// part for a static solution), every value from MLS at the point; K_I = sqrt(J E').
+#pragma once
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "efg/config.hpp"
+#include "efg/setup.hpp"
+#include "mls/mls.hpp"
+#include "neighbors/neighbor_search.hpp"
+
+namespace polymech::efg {
+
+struct JResult {
+  double radius = 0.0;
+  double j = 0.0;
+  double k = 0.0;       // sqrt(J E')
+  double factor = 0.0;  // k / (stress sqrt(pi a))
+};
+
+struct Timings {
+  double shape_seconds = 0.0;    // MLS shape functions at the background Gauss points
+  double assembly_seconds = 0.0; // stiffness kernel + sparse matrix + penalty and loads
+  double solve_seconds = 0.0;    // factorisation and solve
+  double evaluations = 0.0;      // shape-function rows evaluated (points)
+  double entries = 0.0;          // shape-function values (point-node pairs)
+};
+
+namespace detail {
+
+// Index of `col` in the sorted cols[b, e) (the pattern contains it by construction).
+KOKKOS_INLINE_FUNCTION Offset find_col(const View1<Index>& cols, Offset b, Offset e, Index col) {
+  while (b < e) {
+    const Offset m = b + (e - b) / 2;
+    if (cols(m) < col)
+      b = m + 1;
+    else
+      e = m;
+  }
+  return b;
+}
+
+// seed 004 eq. (8): K_IJ += w_q B_I^T D B_J at every Gauss point q, for every pair of its nodes, into the
+// 2x2 blocks (4 values per pattern entry, row-major) of the node pattern.
+template <class T>
+void assemble_stiffness(const mls::ShapeFunctions<T>& sf, const View1<T>& weight, const Kokkos::View<Offset*, MemSpace>& row_ptr,
+                        const View1<Index>& cols, const View1<T>& values, T lam, T mu) {
+  const auto rows = sf.rows;
+  const auto dphi = sf.dphi;
+  const T c11 = lam + T(2) * mu;
+  Kokkos::parallel_for(
+      "polymech::efg::stiffness", range(sf.points), KOKKOS_LAMBDA(const Index q) {
+        const T w = weight(q);
+        const Offset b = rows.offsets(q), e = rows.offsets(q + 1);
+        for (Offset ka = b; ka < e; ++ka) {
+          const Index na = rows.neighbors(ka);
+          const T ax = dphi(ka, 0) * w, ay = dphi(ka, 1) * w;
+          const Offset rb = row_ptr(na), re = row_ptr(na + 1);
+          for (Offset kb = b; kb < e; ++kb) {
+            const Index nb = rows.neighbors(kb);
+            const T bx = dphi(kb, 0), by = dphi(kb, 1);
+            const Offset s = find_col(cols, rb, re, nb);
+            Kokkos::atomic_add(&values(4 * s + 0), ax * c11 * bx + ay * mu * by);
+            Kokkos::atomic_add(&values(4 * s + 1), ax * lam * by + ay * mu * bx);
+            Kokkos::atomic_add(&values(4 * s + 2), ay * lam * bx + ax * mu * by);
+            Kokkos::atomic_add(&values(4 * s + 3), ay * c11 * by + ax * mu * bx);
+          }
+        }
+      });
+}
+
+// u and its gradient at the points: out(i) = (ux, uy, ux_x, ux_y, uy_x, uy_y), u_h = sum_I phi_I u_I.
+template <class T>
+void interpolate(const mls::ShapeFunctions<T>& sf, const View1<T>& u, const Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>& out) {
+  const auto rows = sf.rows;
+  const auto phi = sf.phi;
+  const auto dphi = sf.dphi;
+  Kokkos::parallel_for(
+      "polymech::efg::interpolate", range(sf.points), KOKKOS_LAMBDA(const Index i) {
+        T v[6] = {};
+        for (Offset k = rows.offsets(i); k < rows.offsets(i + 1); ++k) {
+          const Index n = rows.neighbors(k);
+          const T ux = u(2 * n), uy = u(2 * n + 1);
+          v[0] += phi(k) * ux;
+          v[1] += phi(k) * uy;
+          v[2] += dphi(k, 0) * ux;
+          v[3] += dphi(k, 1) * ux;
+          v[4] += dphi(k, 0) * uy;
+          v[5] += dphi(k, 1) * uy;
+        }
+        for (int c = 0; c < 6; ++c) out(i, c) = v[c];
+      });
+}
+
+template <class T>
+VecView<T, 2> to_points(const std::vector<double>& flat, int stride, const char* label) {
+  const std::size_t n = flat.size() / static_cast<std::size_t>(stride);
+  VecView<T, 2> v(std::string(label), n);
+  auto h = Kokkos::create_mirror_view(v);
+  for (std::size_t i = 0; i < n; ++i) {
+    h(i, 0) = static_cast<T>(flat[i * static_cast<std::size_t>(stride)]);
+    h(i, 1) = static_cast<T>(flat[i * static_cast<std::size_t>(stride) + 1]);
+  }
+  Kokkos::deep_copy(v, h);
+  return v;
+}
+
+}  // namespace detail
+
+template <class T = double>
+class Efg {
+ public:
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+  explicit Efg(const Config& c) : config_(c), layout_(make_layout(c)) {
+    if (c.gauss < 1) throw std::invalid_argument("efg: gauss must be >= 1");
+    nodes_ = detail::to_points<T>(layout_.nodes, 2, "polymech::efg::nodes");
+    dm_ = View1<T>("polymech::efg::support_radius", layout_.dm.size());
+    auto hd = Kokkos::create_mirror_view(dm_);
+    for (std::size_t i = 0; i < layout_.dm.size(); ++i) {
+      hd(i) = static_cast<T>(layout_.dm[i]);
+      max_dm_ = std::max(max_dm_, layout_.dm[i]);
+    }
+    Kokkos::deep_copy(dm_, hd);
+    crack_ = mls::Segments<T>("polymech::efg::crack", layout_.crack.size() / 4);
+    auto hc = Kokkos::create_mirror_view(crack_);
+    for (std::size_t s = 0; s < layout_.crack.size() / 4; ++s)
+      for (int k = 0; k < 4; ++k) hc(s, k) = static_cast<T>(layout_.crack[4 * s + static_cast<std::size_t>(k)]);
+    Kokkos::deep_copy(crack_, hc);
+    const double nu = c.poisson;
+    mu_ = c.young / (2 * (1 + nu));
+    const double lam = c.young * nu / ((1 + nu) * (1 - 2 * nu));
+    lam_ = c.plane_strain ? lam : 2 * lam * mu_ / (lam + 2 * mu_);
+  }
+
+  const Config& config() const { return config_; }
+  const Layout& layout() const { return layout_; }
+  Index nodes() const { return static_cast<Index>(layout_.node_count()); }
+  const Timings& timings() const { return timings_; }
+  const std::vector<double>& coefficients() const { return u_host_; }
+
+  // MLS shape functions at points (x, y pairs in `flat`, `stride` values per point). Throws naming the
+  // first point whose moment matrix is nearly singular.
+  mls::ShapeFunctions<T> shape_functions(const std::vector<double>& flat, int stride, const std::string& what) const {
+    const auto pts = detail::to_points<T>(flat, stride, "polymech::efg::points");
+    return shape_functions(pts, what);
+  }
+  mls::ShapeFunctions<T> shape_functions(const VecView<T, 2>& pts, const std::string& what) const {
+    neighbors::NeighborSearch<T, 2> search;
+    neighbors::NeighborList candidates;
+    search.build_between(pts, nodes_, static_cast<T>(max_dm_), candidates);
+    mls::ShapeFunctions<T> sf;
+    sf.rows = mls::support_rows(candidates, pts, nodes_, dm_, crack_);
+    mls::evaluate(pts, nodes_, dm_, static_cast<T>(config_.min_moment_ratio), sf);
+    Index count = 0;
+    const Index first = mls::first_flagged(sf.status, sf.points, count);
+    if (first >= 0) {
+      auto hp = Kokkos::create_mirror_view_and_copy(HostSpace(), pts);
+      auto hr = Kokkos::create_mirror_view_and_copy(HostSpace(), sf.ratio);
+      auto ho = Kokkos::create_mirror_view_and_copy(HostSpace(), sf.rows.offsets);
+      char buf[400];
+      std::snprintf(buf, sizeof buf,
+                    "EFG: nearly singular MLS moment matrix at %s point %d (x = %.9g, y = %.9g): det(A)/(A00 A11 A22) = "
+                    "%.3g < min_moment_ratio %.3g, %lld nodes in its support (%d such points; too few or nearly collinear "
+                    "nodes: raise support_factor or move the nodes)",
+                    what.c_str(), static_cast<int>(first), static_cast<double>(hp(first, 0)), static_cast<double>(hp(first, 1)),
+                    static_cast<double>(hr(first)), config_.min_moment_ratio,
+                    static_cast<long long>(ho(first + 1) - ho(first)), static_cast<int>(count));
+      throw std::runtime_error(buf);
+    }
+    return sf;
+  }
+
+  // The static solution: shape functions at the Gauss points, stiffness, penalty terms, loads, solve.
+  void solve_static() {
+    using clock = std::chrono::steady_clock;
+    auto t0 = clock::now();
+    const auto& L = layout_;
+    const Index n = nodes();
+    const auto qpts = detail::to_points<T>(L.quad, 3, "polymech::efg::gauss_points");
+    View1<T> qw("polymech::efg::gauss_weights", L.quad_count());
+    {
+      auto h = Kokkos::create_mirror_view(qw);
+      for (std::size_t q = 0; q < L.quad_count(); ++q) h(q) = static_cast<T>(L.quad[3 * q + 2]);
+      Kokkos::deep_copy(qw, h);
+    }
+    const auto sf = shape_functions(qpts, "background Gauss");
+    Kokkos::fence();
+    auto t1 = clock::now();
+    timings_.shape_seconds = std::chrono::duration<double>(t1 - t0).count();
+    timings_.evaluations = static_cast<double>(sf.points);
+    timings_.entries = static_cast<double>(sf.rows.num_pairs);
+
+    build_pattern();
+    View1<T> values("polymech::efg::stiffness_values", static_cast<std::size_t>(4 * cols_host_.size()));
+    detail::assemble_stiffness(sf, qw, row_ptr_, cols_, values, static_cast<T>(lam_), static_cast<T>(mu_));
+    auto hv = Kokkos::create_mirror_view_and_copy(HostSpace(), values);
+    std::vector<Eigen::Triplet<double, int>> trip;
+    trip.reserve(4 * cols_host_.size() + 64);
+    for (Index a = 0; a < n; ++a)
+      for (Offset s = row_ptr_host_[static_cast<std::size_t>(a)]; s < row_ptr_host_[static_cast<std::size_t>(a) + 1]; ++s) {
+        const Index b = cols_host_[static_cast<std::size_t>(s)];
+        for (int r = 0; r < 2; ++r)
+          for (int c = 0; c < 2; ++c) trip.emplace_back(2 * a + r, 2 * b + c, static_cast<double>(hv(4 * s + 2 * r + c)));
+      }
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * n);
+    // penalty: alpha sum_p N_I N_J (held component) and alpha N_I value on the right-hand side
+    if (!L.penalty.empty()) {
+      const auto ps = shape_functions(L.penalty, 5, "penalty");
+      auto off = Kokkos::create_mirror_view_and_copy(HostSpace(), ps.rows.offsets);
+      auto nb = Kokkos::create_mirror_view_and_copy(HostSpace(), ps.rows.neighbors);
+      auto ph = Kokkos::create_mirror_view_and_copy(HostSpace(), ps.phi);
+      for (std::size_t p = 0; p < L.penalty.size() / 5; ++p) {
+        const double k = L.penalty[5 * p + 2];
+        const int comp = static_cast<int>(L.penalty[5 * p + 3]);
+        const double val = L.penalty[5 * p + 4];
+        for (Offset ka = off(p); ka < off(p + 1); ++ka) {
+          f(2 * nb(ka) + comp) += k * static_cast<double>(ph(ka)) * val;
+          for (Offset kb = off(p); kb < off(p + 1); ++kb)
+            trip.emplace_back(2 * nb(ka) + comp, 2 * nb(kb) + comp, k * static_cast<double>(ph(ka)) * static_cast<double>(ph(kb)));
+        }
+      }
+    }
+    // seed 004 eq. (9): f_I = sum over boundary Gauss points of N_I t w
+    if (!L.traction.empty()) {
+      const auto ts = shape_functions(L.traction, 5, "traction");
+      auto off = Kokkos::create_mirror_view_and_copy(HostSpace(), ts.rows.offsets);
+      auto nb = Kokkos::create_mirror_view_and_copy(HostSpace(), ts.rows.neighbors);
+      auto ph = Kokkos::create_mirror_view_and_copy(HostSpace(), ts.phi);
+      for (std::size_t p = 0; p < L.traction.size() / 5; ++p)
+        for (Offset k = off(p); k < off(p + 1); ++k)
+          for (int c = 0; c < 2; ++c) f(2 * nb(k) + c) += L.traction[5 * p + 2] * static_cast<double>(ph(k)) * L.traction[5 * p + 3 + static_cast<std::size_t>(c)];
+    }
+    SparseMatrix K(2 * n, 2 * n);
+    K.setFromTriplets(trip.begin(), trip.end());
+    auto t2 = clock::now();
+    timings_.assembly_seconds = std::chrono::duration<double>(t2 - t1).count();
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+    ldlt.compute(K);
+    if (ldlt.info() != Eigen::Success) throw std::runtime_error("EFG: the stiffness factorisation failed (a rigid-body mode not held?)");
+    const Eigen::VectorXd u = ldlt.solve(f);
+    if (ldlt.info() != Eigen::Success || !u.allFinite()) throw std::runtime_error("EFG: the static solve failed");
+    timings_.solve_seconds = std::chrono::duration<double>(clock::now() - t2).count();
+    u_host_.assign(u.data(), u.data() + u.size());
+    u_ = View1<T>("polymech::efg::coefficients", static_cast<std::size_t>(2 * n));
+    auto hu = Kokkos::create_mirror_view(u_);
+    for (Index i = 0; i < 2 * n; ++i) hu(i) = static_cast<T>(u(i));
+    Kokkos::deep_copy(u_, hu);
+  }
+
+  // (ux, uy, ux_x, ux_y, uy_x, uy_y) at each point (x, y pairs).
+  std::vector<double> fields_at(const std::vector<double>& xy, const std::string& what = "field") const {
+    const auto sf = shape_functions(xy, 2, what);
+    Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace> out("polymech::efg::fields", static_cast<std::size_t>(sf.points));
+    detail::interpolate(sf, u_, out);
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), out);
+    std::vector<double> r(static_cast<std::size_t>(sf.points) * 6);
+    for (Index i = 0; i < sf.points; ++i)
+      for (int c = 0; c < 6; ++c) r[static_cast<std::size_t>(i) * 6 + static_cast<std::size_t>(c)] = static_cast<double>(h(i, c));
+    return r;
+  }
+
+  // seed 004 eq. (13), static part: J = int_Gamma (W n_1 - t_i u_i,1) dS on the circle of `radius`
+  // around the tip, counter-clockwise from the lower crack face to the upper one (the crack faces are
+  // traction-free); `arcs` arcs x `gauss` Gauss points.
+  JResult j_integral(double radius) const {
+    const int arcs = config_.j_arcs;
+    std::vector<double> gx, gw;
+    gauss_rule(config_.j_gauss, gx, gw);
+    constexpr double pi = 3.14159265358979323846;
+    std::vector<double> xy, w, th;
+    const double d = 2 * pi / arcs;
+    for (int m = 0; m < arcs; ++m)
+      for (std::size_t g = 0; g < gx.size(); ++g) {
+        const double t = -pi + d * (m + 0.5 * (1 + gx[g]));
+        xy.push_back(layout_.tip_x + radius * std::cos(t));
+        xy.push_back(layout_.tip_y + radius * std::sin(t));
+        w.push_back(0.5 * d * gw[g] * radius);
+        th.push_back(t);
+      }
+    const auto v = fields_at(xy, "J-contour");
+    double j = 0.0;
+    for (std::size_t p = 0; p < w.size(); ++p) {
+      const double* g = &v[6 * p];
+      const double exx = g[2], eyy = g[5], gxy = g[3] + g[4];
+      const double sxx = (lam_ + 2 * mu_) * exx + lam_ * eyy, syy = lam_ * exx + (lam_ + 2 * mu_) * eyy, sxy = mu_ * gxy;
+      const double W = 0.5 * (sxx * exx + syy * eyy + sxy * gxy);
+      const double n1 = std::cos(th[p]), n2 = std::sin(th[p]);
+      const double t1 = sxx * n1 + sxy * n2, t2 = sxy * n1 + syy * n2;
+      j += w[p] * (W * n1 - (t1 * g[2] + t2 * g[4]));
+    }
+    JResult r;
+    r.radius = radius;
+    r.j = j;
+    r.k = std::sqrt(std::max(0.0, j) * effective_modulus(config_));
+    r.factor = config_.stress > 0 ? r.k / (config_.stress * std::sqrt(pi * config_.crack_length)) : 0.0;
+    return r;
+  }
+
+  // Crack-opening displacement at x (u_y just above minus just below the crack line).
+  double opening_at(double x) const {
+    const double e = 1e-6 * config_.h_min;
+    const auto v = fields_at({x, e, x, -e}, "crack-opening");
+    return v[1] - v[6 + 1];
+  }
+
+  static void gauss_rule(int n, std::vector<double>& x, std::vector<double>& w) {
+    // the 1D rule of the layout (a one-cell layout would do; the closed forms suffice for n <= 5)
+    x.clear();
+    w.clear();
+    if (n == 1) {
+      x = {0.0};
+      w = {2.0};
+    } else if (n == 2) {
+      const double a = 1 / std::sqrt(3.0);
+      x = {-a, a};
+      w = {1.0, 1.0};
+    } else if (n == 3) {
+      const double a = std::sqrt(0.6);
+      x = {-a, 0.0, a};
+      w = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    } else {
+      const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
+      const double wa = (18 + std::sqrt(30.0)) / 36, wb = (18 - std::sqrt(30.0)) / 36;
+      x = {-b, -a, a, b};
+      w = {wb, wa, wa, wb};
+    }
+  }
+
+ private:
+  // Node pairs whose supports overlap (|x_I - x_J| < dm_I + dm_J), each row sorted, the diagonal included.
+  void build_pattern() {
+    const Index n = nodes();
+    neighbors::NeighborSearch<T, 2> search;
+    neighbors::NeighborList list;
+    search.build(nodes_, static_cast<T>(2 * max_dm_), neighbors::ListKind::full, list);
+    auto off = Kokkos::create_mirror_view_and_copy(HostSpace(), list.offsets);
+    auto nb = Kokkos::create_mirror_view_and_copy(HostSpace(), list.neighbors);
+    const auto& X = layout_.nodes;
+    const auto& D = layout_.dm;
+    row_ptr_host_.assign(static_cast<std::size_t>(n) + 1, 0);
+    cols_host_.clear();
+    std::vector<Index> row;
+    for (Index i = 0; i < n; ++i) {
+      row.clear();
+      row.push_back(i);
+      const auto si = static_cast<std::size_t>(i);
+      for (Offset k = off(i); k < off(i + 1); ++k) {
+        const auto j = static_cast<std::size_t>(nb(k));
+        const double dx = X[2 * si] - X[2 * j], dy = X[2 * si + 1] - X[2 * j + 1];
+        const double r = D[si] + D[j];
+        if (dx * dx + dy * dy < r * r) row.push_back(nb(k));
+      }
+      std::sort(row.begin(), row.end());
+      cols_host_.insert(cols_host_.end(), row.begin(), row.end());
+      row_ptr_host_[si + 1] = static_cast<Offset>(cols_host_.size());
+    }
+    row_ptr_ = Kokkos::View<Offset*, MemSpace>("polymech::efg::row_ptr", row_ptr_host_.size());
+    cols_ = View1<Index>("polymech::efg::cols", cols_host_.size());
+    auto hr = Kokkos::create_mirror_view(row_ptr_);
+    auto hc = Kokkos::create_mirror_view(cols_);
+    for (std::size_t i = 0; i < row_ptr_host_.size(); ++i) hr(i) = row_ptr_host_[i];
+    for (std::size_t i = 0; i < cols_host_.size(); ++i) hc(i) = cols_host_[i];
+    Kokkos::deep_copy(row_ptr_, hr);
+    Kokkos::deep_copy(cols_, hc);
+  }
+
+  Config config_;
+  Layout layout_;
+  VecView<T, 2> nodes_;
+  View1<T> dm_;
+  mls::Segments<T> crack_;
+  double max_dm_ = 0.0;
+  double lam_ = 0.0, mu_ = 0.0;
+  std::vector<Offset> row_ptr_host_;
+  std::vector<Index> cols_host_;
+  Kokkos::View<Offset*, MemSpace> row_ptr_;
+  View1<Index> cols_;
+  View1<T> u_;
+  std::vector<double> u_host_;
+  Timings timings_;
+};
+
+}  // namespace polymech::efg
