@@ -1,6 +1,7 @@
 #include "io/registry.hpp"
 
 #include "io/dem_scene.hpp"
+#include "io/efg_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
@@ -37,6 +38,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_dem_scene(f); },
        [](const std::filesystem::path&) { return std::string("dem_benchmark"); },
        [](const std::filesystem::path& f) { return load_dem_scene(f).cost; }},
+      {"efg", "element-free Galerkin cracked plates, MLS + J-integral (seed 004)", {"efg"},
+       [](const std::filesystem::path& f) { load_efg_scene(f); },
+       [](const std::filesystem::path&) { return std::string("efg"); },
+       [](const std::filesystem::path& f) { return load_efg_scene(f).cost; }},
   };
   return kinds;
 }

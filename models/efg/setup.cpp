@@ -90,6 +90,37 @@ std::vector<double> graded_line(double lo, double hi, const std::vector<double>&
   return out;
 }
 
+double graded_line_intervals(double lo, double hi, const std::vector<double>& foci, double h_min, double h_max, double growth) {
+  if (!(hi > lo) || !(h_min > 0) || !(h_max >= h_min)) return 0.0;
+  constexpr int samples = 4000;
+  const double ds = (hi - lo) / samples;
+  double total = 0.0;
+  for (int k = 0; k < samples; ++k) {
+    const double s = lo + (k + 0.5) * ds;
+    double h = h_max;
+    if (!foci.empty()) {
+      double d = 1e300;
+      for (double f : foci) d = std::min(d, std::abs(s - f));
+      h = std::min(h_max, h_min + growth * d);
+    }
+    total += ds / h;
+  }
+  return total + static_cast<double>(foci.size()) + 1.0;
+}
+
+void estimate_lines(const Config& c, double& nx, double& ny) {
+  const double a = c.crack_length;
+  if (c.crack == CrackKind::centre)
+    nx = graded_line_intervals(-0.5 * c.width, 0.5 * c.width, {-a, a}, c.h_min, c.h_max, c.growth) + 1;
+  else if (c.crack == CrackKind::edge)
+    nx = graded_line_intervals(0.0, c.width, {a}, c.h_min, c.h_max, c.growth) + 1;
+  else
+    nx = graded_line_intervals(0.0, c.width, {}, c.h_max, c.h_max, c.growth) + 1;
+  ny = graded_line_intervals(-0.5 * c.height, 0.5 * c.height,
+                             c.crack == CrackKind::none ? std::vector<double>{} : std::vector<double>{0.0},
+                             c.crack == CrackKind::none ? c.h_max : c.h_min, c.h_max, c.growth) + 1;
+}
+
 void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& ys) {
   const double a = c.crack_length;
   if (c.crack == CrackKind::centre) {

@@ -30,10 +30,16 @@ struct Layout {
 std::vector<double> graded_line(double lo, double hi, const std::vector<double>& foci, double h_min, double h_max,
                                 double growth);
 
-// Node lines only (cheap: the loader's size estimate).
+// The number of intervals graded_line would make, without making them (the loader's size estimate).
+double graded_line_intervals(double lo, double hi, const std::vector<double>& foci, double h_min, double h_max, double growth);
+
+// Node lines only.
 void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& ys);
 
 Layout make_layout(const Config& c);
+
+// Estimated node-line counts of a configuration (x, y) without building them.
+void estimate_lines(const Config& c, double& nx, double& ny);
 
 // Handbook K_I / (stress sqrt(pi a)) of an infinitely long strip (Tada, Paris & Irwin): edge crack
 // F(a/W) = 1.12 - 0.231 s + 10.55 s^2 - 21.72 s^3 + 30.39 s^4 (0.5 % for a/W <= 0.6); centre crack
