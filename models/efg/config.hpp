@@ -30,6 +30,9 @@ struct Config {
   double h_max = 0.05;
   double h_min = 0.05;
   double growth = 0.3;
+  // The node lines are refined about x = tip + tip_offset x h_min: 0 puts a node on the tip, 0.5 puts
+  // the tip half-way between two nodes (a hard case of the issue).
+  double tip_offset = 0.0;
   // Interior nodes off the crack line moved by up to jitter x the local spacing (0: none).
   double jitter = 0.0;
   std::uint64_t seed = 1;

@@ -110,10 +110,11 @@ double graded_line_intervals(double lo, double hi, const std::vector<double>& fo
 
 void estimate_lines(const Config& c, double& nx, double& ny) {
   const double a = c.crack_length;
+  const double f = a + c.tip_offset * c.h_min;
   if (c.crack == CrackKind::centre)
-    nx = graded_line_intervals(-0.5 * c.width, 0.5 * c.width, {-a, a}, c.h_min, c.h_max, c.growth) + 1;
+    nx = graded_line_intervals(-0.5 * c.width, 0.5 * c.width, {-f, f}, c.h_min, c.h_max, c.growth) + 1;
   else if (c.crack == CrackKind::edge)
-    nx = graded_line_intervals(0.0, c.width, {a}, c.h_min, c.h_max, c.growth) + 1;
+    nx = graded_line_intervals(0.0, c.width, {f}, c.h_min, c.h_max, c.growth) + 1;
   else
     nx = graded_line_intervals(0.0, c.width, {}, c.h_max, c.h_max, c.growth) + 1;
   ny = graded_line_intervals(-0.5 * c.height, 0.5 * c.height,
@@ -123,10 +124,11 @@ void estimate_lines(const Config& c, double& nx, double& ny) {
 
 void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& ys) {
   const double a = c.crack_length;
+  const double f = a + c.tip_offset * c.h_min;
   if (c.crack == CrackKind::centre) {
-    xs = graded_line(-0.5 * c.width, 0.5 * c.width, {-a, a}, c.h_min, c.h_max, c.growth);
+    xs = graded_line(-0.5 * c.width, 0.5 * c.width, {-f, f}, c.h_min, c.h_max, c.growth);
   } else if (c.crack == CrackKind::edge) {
-    xs = graded_line(0.0, c.width, {a}, c.h_min, c.h_max, c.growth);
+    xs = graded_line(0.0, c.width, {f}, c.h_min, c.h_max, c.growth);
   } else {
     xs = graded_line(0.0, c.width, {}, c.h_max, c.h_max, c.growth);
   }

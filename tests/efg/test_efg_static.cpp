@@ -83,3 +83,26 @@ TEST(EfgStatic, EdgeCrackStressIntensityAgainstHandbook) {
   std::printf("J path spread %.3f %%\n", 100 * (hi - lo) / hi);
   EXPECT_LT((hi - lo) / hi, 0.02);
 }
+
+// Hard cases of the issue on the same strip: interior nodes jittered by up to 0.3 of the local spacing,
+// and the crack tip half-way between two node lines.
+TEST(EfgStatic, JitteredNodesAndATipBetweenNodes) {
+  const double f = efg::handbook_factor(reduced_edge_crack());
+  for (int variant = 0; variant < 2; ++variant) {
+    auto c = reduced_edge_crack();
+    if (variant == 0) c.jitter = 0.3;
+    if (variant == 1) c.tip_offset = 0.5;
+    efg::Efg<double> m(c);
+    m.solve_static();
+    double lo = 1e300, hi = -1e300;
+    for (double r : c.j_radii) {
+      const auto j = m.j_integral(r);
+      lo = std::min(lo, j.j);
+      hi = std::max(hi, j.j);
+      std::printf("%s: r = %.3f: K/(s sqrt(pi a)) = %.5f (%+.2f %%)\n", variant == 0 ? "jitter 0.3" : "tip between nodes", r,
+                  j.factor, 100 * (j.factor / f - 1));
+      EXPECT_NEAR(j.factor / f, 1.0, 0.03) << "variant " << variant << ", r = " << r;
+    }
+    EXPECT_LT((hi - lo) / hi, 0.03) << "variant " << variant;
+  }
+}
