@@ -108,7 +108,27 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     if (!(r < room)) j.fail("radii", "has " + format_number(r) + " m: a contour must stay inside the plate and cross only the crack (radius < " + format_number(room) + " m)");
   c.j_arcs = static_cast<int>(j.integer("arcs", 20, 4, 400));
   c.j_gauss = static_cast<int>(j.integer("gauss", 4, 1, 4));
+  out.domain_cells = static_cast<int>(j.integer("domain_cells", 20, 2, 100));
   j.finish();
+  if (const auto dyn = root.optional_table("dynamic")) {
+    out.dynamic = true;
+    out.dt = dyn->real("dt", pl::time_step());
+    out.duration = dyn->real("duration", pl::duration());
+    out.output_every = static_cast<int>(dyn->integer("output_every", 1, 1, 1000000));
+    const double steps = std::ceil(out.duration / out.dt - 1e-9);
+    if (!(steps <= 1e6)) dyn->fail("duration", "gives " + format_number(steps) + " steps of dynamic.dt; at most 1e6");
+    // the unconditionally stable average-acceleration rule: dt is an accuracy choice; refuse one that
+    // does not resolve the dilatational wave crossing one h_max
+    const double lam = c.young * c.poisson / ((1 + c.poisson) * (1 - 2 * c.poisson)), mu = c.young / (2 * (1 + c.poisson));
+    const double cd = std::sqrt((lam + 2 * mu) / c.density);
+    if (!(out.dt <= 10 * c.h_max / cd))
+      dyn->fail("dt", "= " + format_number(out.dt) + " s is above 10 h_max / c_d = " + format_number(10 * c.h_max / cd) +
+                          " s: the step would not resolve the waves");
+    dyn->finish();
+    out.cost.steps = steps;
+    out.cost.step_name = "Newmark steps";
+    out.cost.seconds += steps * nodes / 5e6;
+  }
   root.finish();
   out.handbook = efg::handbook_factor(c);
   return out;

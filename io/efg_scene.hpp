@@ -17,6 +17,12 @@ struct EfgScene {
   SceneHeader header;
   efg::Config config;
   double handbook = 0.0;  // Tada, Paris & Irwin K / (stress sqrt(pi a)) of the plate
+  // [dynamic] (optional): a Heaviside step load at t = 0, Newmark beta = 1/4 (seed 004 §3.2)
+  bool dynamic = false;
+  double dt = 0.0;           // [s]
+  double duration = 0.0;     // [s]
+  int output_every = 1;      // steps between J' and crack-opening samples
+  int domain_cells = 20;     // radial and angular cells of the J' domain part (4 x 4 Gauss points each)
   CostEstimate cost;
 };
 

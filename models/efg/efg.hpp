@@ -40,6 +40,8 @@ struct Timings {
   double shape_seconds = 0.0;    // MLS shape functions at the background Gauss points
   double assembly_seconds = 0.0; // stiffness kernel + sparse matrix + penalty and loads
   double solve_seconds = 0.0;    // factorisation and solve
+  double factor_seconds = 0.0;   // dynamics: a_0 and the effective stiffness, once per dt
+  double step_seconds = 0.0;     // dynamics: all steps (solves and vector updates)
   double evaluations = 0.0;      // shape-function rows evaluated (points)
   double entries = 0.0;          // shape-function values (point-node pairs)
 };
@@ -82,6 +84,28 @@ void assemble_stiffness(const mls::ShapeFunctions<T>& sf, const View1<T>& weight
             Kokkos::atomic_add(&values(4 * s + 1), ax * lam * by + ay * mu * bx);
             Kokkos::atomic_add(&values(4 * s + 2), ay * lam * bx + ax * mu * by);
             Kokkos::atomic_add(&values(4 * s + 3), ay * c11 * by + ax * mu * bx);
+          }
+        }
+      });
+}
+
+// seed 004 eq. (7): M_IJ += w_q rho phi_I phi_J (one value per pattern entry; the same for both components).
+template <class T>
+void assemble_mass(const mls::ShapeFunctions<T>& sf, const View1<T>& weight, const Kokkos::View<Offset*, MemSpace>& row_ptr,
+                   const View1<Index>& cols, const View1<T>& values, T rho) {
+  const auto rows = sf.rows;
+  const auto phi = sf.phi;
+  Kokkos::parallel_for(
+      "polymech::efg::mass", range(sf.points), KOKKOS_LAMBDA(const Index q) {
+        const T w = weight(q) * rho;
+        const Offset b = rows.offsets(q), e = rows.offsets(q + 1);
+        for (Offset ka = b; ka < e; ++ka) {
+          const Index na = rows.neighbors(ka);
+          const T pa = phi(ka) * w;
+          const Offset rb = row_ptr(na), re = row_ptr(na + 1);
+          for (Offset kb = b; kb < e; ++kb) {
+            const Offset s = find_col(cols, rb, re, rows.neighbors(kb));
+            Kokkos::atomic_add(&values(s), pa * phi(kb));
           }
         }
       });
@@ -189,8 +213,8 @@ class Efg {
     return sf;
   }
 
-  // The static solution: shape functions at the Gauss points, stiffness, penalty terms, loads, solve.
-  void solve_static() {
+  // Shape functions at the Gauss points, stiffness (with the penalty terms), consistent mass, loads.
+  void assemble() {
     using clock = std::chrono::steady_clock;
     auto t0 = clock::now();
     const auto& L = layout_;
@@ -212,6 +236,20 @@ class Efg {
     build_pattern();
     View1<T> values("polymech::efg::stiffness_values", static_cast<std::size_t>(4 * cols_host_.size()));
     detail::assemble_stiffness(sf, qw, row_ptr_, cols_, values, static_cast<T>(lam_), static_cast<T>(mu_));
+    View1<T> mvalues("polymech::efg::mass_values", cols_host_.size());
+    detail::assemble_mass(sf, qw, row_ptr_, cols_, mvalues, static_cast<T>(config_.density));
+    auto hm = Kokkos::create_mirror_view_and_copy(HostSpace(), mvalues);
+    {
+      std::vector<Eigen::Triplet<double, int>> mt;
+      mt.reserve(2 * cols_host_.size());
+      for (Index a = 0; a < n; ++a)
+        for (Offset s = row_ptr_host_[static_cast<std::size_t>(a)]; s < row_ptr_host_[static_cast<std::size_t>(a) + 1]; ++s) {
+          const Index b = cols_host_[static_cast<std::size_t>(s)];
+          for (int r = 0; r < 2; ++r) mt.emplace_back(2 * a + r, 2 * b + r, static_cast<double>(hm(s)));
+        }
+      M_ = SparseMatrix(2 * n, 2 * n);
+      M_.setFromTriplets(mt.begin(), mt.end());
+    }
     auto hv = Kokkos::create_mirror_view_and_copy(HostSpace(), values);
     std::vector<Eigen::Triplet<double, int>> trip;
     trip.reserve(4 * cols_host_.size() + 64);
@@ -249,21 +287,126 @@ class Efg {
         for (Offset k = off(p); k < off(p + 1); ++k)
           for (int c = 0; c < 2; ++c) f(2 * nb(k) + c) += L.traction[5 * p + 2] * static_cast<double>(ph(k)) * L.traction[5 * p + 3 + static_cast<std::size_t>(c)];
     }
-    SparseMatrix K(2 * n, 2 * n);
-    K.setFromTriplets(trip.begin(), trip.end());
-    auto t2 = clock::now();
-    timings_.assembly_seconds = std::chrono::duration<double>(t2 - t1).count();
+    K_ = SparseMatrix(2 * n, 2 * n);
+    K_.setFromTriplets(trip.begin(), trip.end());
+    f_ = f;
+    timings_.assembly_seconds = std::chrono::duration<double>(clock::now() - t1).count();
+    assembled_ = true;
+  }
+
+  // The static solution K u = f.
+  void solve_static() {
+    if (!assembled_) assemble();
+    const auto t2 = std::chrono::steady_clock::now();
+    const auto& K = K_;
+    const auto& f = f_;
     Eigen::SimplicialLDLT<SparseMatrix> ldlt;
     ldlt.compute(K);
     if (ldlt.info() != Eigen::Success) throw std::runtime_error("EFG: the stiffness factorisation failed (a rigid-body mode not held?)");
     const Eigen::VectorXd u = ldlt.solve(f);
     if (ldlt.info() != Eigen::Success || !u.allFinite()) throw std::runtime_error("EFG: the static solve failed");
-    timings_.solve_seconds = std::chrono::duration<double>(clock::now() - t2).count();
+    timings_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
     u_host_.assign(u.data(), u.data() + u.size());
-    u_ = View1<T>("polymech::efg::coefficients", static_cast<std::size_t>(2 * n));
-    auto hu = Kokkos::create_mirror_view(u_);
-    for (Index i = 0; i < 2 * n; ++i) hu(i) = static_cast<T>(u(i));
-    Kokkos::deep_copy(u_, hu);
+    to_device(u, u_, "polymech::efg::coefficients");
+  }
+
+  // ---- dynamics: Newmark beta = 1/4, gamma = 1/2 in the incremental form of seed 004 eqs. (6)-(11) ----
+
+  // Starts a run from rest under the load f (a Heaviside step at t = 0: a_0 = M^-1 f) and factorises the
+  // effective stiffness K + M / (beta dt^2) once for this dt.
+  void start_dynamic(double dt) {
+    if (!assembled_) assemble();
+    const auto t0 = std::chrono::steady_clock::now();
+    dt_ = dt;
+    const Index n2 = 2 * nodes();
+    ud_ = Eigen::VectorXd::Zero(n2);
+    vd_ = Eigen::VectorXd::Zero(n2);
+    Eigen::SimplicialLDLT<SparseMatrix> mass;
+    mass.compute(M_);
+    if (mass.info() != Eigen::Success) throw std::runtime_error("EFG: the mass matrix factorisation failed");
+    ad_ = mass.solve(f_);
+    SparseMatrix keff = K_ + M_ * (1.0 / (beta_ * dt * dt));
+    keff_.compute(keff);
+    if (keff_.info() != Eigen::Success) throw std::runtime_error("EFG: the effective stiffness factorisation failed");
+    time_ = 0.0;
+    step_ = 0;
+    timings_.factor_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    sync_dynamic();
+  }
+
+  // One step: K_eff du = df + r + M (v_n / (beta dt) + a_n / (2 beta)), r = f_n - K u_n - M a_n (eq. (11),
+  // the residual of the previous step); then da, dv from Newmark's relations. The load is constant
+  // after t = 0 (df = 0).
+  void step() {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double b = beta_, dt = dt_;
+    const Eigen::VectorXd r = f_ - K_ * ud_ - M_ * ad_;
+    const Eigen::VectorXd rhs = r + M_ * (vd_ * (1.0 / (b * dt)) + ad_ * (1.0 / (2 * b)));
+    const Eigen::VectorXd du = keff_.solve(rhs);
+    const Eigen::VectorXd da = du * (1.0 / (b * dt * dt)) - vd_ * (1.0 / (b * dt)) - ad_ * (1.0 / (2 * b));
+    vd_ += dt * ad_ + 0.5 * dt * da;
+    ud_ += du;
+    ad_ += da;
+    time_ += dt;
+    ++step_;
+    timings_.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    sync_dynamic();
+  }
+
+  double time() const { return time_; }
+  std::int64_t step_index() const { return step_; }
+  double dt() const { return dt_; }
+
+  // Kinetic, strain (with the penalty springs) and load-potential energies: their sum stays 0 for the
+  // average-acceleration rule under a constant load (it conserves energy).
+  double kinetic_energy() const { return 0.5 * vd_.dot(M_ * vd_); }
+  double strain_energy() const { return 0.5 * ud_.dot(K_ * ud_); }
+  double load_work() const { return f_.dot(ud_); }
+
+  // seed 004 eq. (13): J' = int_Gamma [(W + K) n_1 - t_i u_i,1] dS + int_V [rho a_i u_i,1 - rho v_i v_i,1] dV
+  // on the circle of `radius` around the tip and the disc inside it (radial x angular cells of `cells`
+  // each, 4 x 4 Gauss points: the paper's 20 x 20).
+  JResult dynamic_j(double radius, int cells = 20) {
+    auto& c = contour_cache(radius, cells);
+    double j = 0.0;
+    const auto u = probe(c.contour, u_), v = probe(c.contour, v_);
+    for (std::size_t p = 0; p < c.w.size(); ++p) {
+      const double* g = &u[6 * p];
+      const double* h = &v[6 * p];
+      const double exx = g[2], eyy = g[5], gxy = g[3] + g[4];
+      const double sxx = (lam_ + 2 * mu_) * exx + lam_ * eyy, syy = lam_ * exx + (lam_ + 2 * mu_) * eyy, sxy = mu_ * gxy;
+      const double W = 0.5 * (sxx * exx + syy * eyy + sxy * gxy);
+      const double Kd = 0.5 * config_.density * (h[0] * h[0] + h[1] * h[1]);
+      const double n1 = std::cos(c.th[p]), n2 = std::sin(c.th[p]);
+      const double t1 = sxx * n1 + sxy * n2, t2 = sxy * n1 + syy * n2;
+      j += c.w[p] * ((W + Kd) * n1 - (t1 * g[2] + t2 * g[4]));
+    }
+    const auto du = probe(c.domain, u_), dv = probe(c.domain, v_), da = probe(c.domain, a_);
+    for (std::size_t p = 0; p < c.dw.size(); ++p) {
+      const double* g = &du[6 * p];
+      const double* h = &dv[6 * p];
+      const double* q = &da[6 * p];
+      j += c.dw[p] * config_.density * (q[0] * g[2] + q[1] * g[4] - (h[0] * h[2] + h[1] * h[4]));
+    }
+    constexpr double pi = 3.14159265358979323846;
+    JResult r;
+    r.radius = radius;
+    r.j = j;
+    r.k = std::sqrt(std::max(0.0, j) * effective_modulus(config_));
+    r.factor = config_.stress > 0 ? r.k / (config_.stress * std::sqrt(pi * config_.crack_length)) : 0.0;
+    return r;
+  }
+
+  // Crack opening at x of the current (dynamic or static) solution.
+  double dynamic_opening_at(double x) {
+    if (!cod_ready_ || cod_x_ != x) {
+      const double e = 1e-6 * config_.h_min;
+      cod_sf_ = shape_functions(std::vector<double>{x, e, x, -e}, 2, "crack-opening");
+      cod_ready_ = true;
+      cod_x_ = x;
+    }
+    const auto v = probe(cod_sf_, u_);
+    return v[1] - v[6 + 1];
   }
 
   // (ux, uy, ux_x, ux_y, uy_x, uy_y) at each point (x, y pairs).
@@ -346,6 +489,74 @@ class Efg {
   }
 
  private:
+  struct ContourCache {
+    double radius = 0.0;
+    int cells = 0;
+    mls::ShapeFunctions<T> contour, domain;
+    std::vector<double> w, th, dw;
+  };
+
+  ContourCache& contour_cache(double radius, int cells) {
+    for (auto& c : contours_)
+      if (c.radius == radius && c.cells == cells) return c;
+    ContourCache c;
+    c.radius = radius;
+    c.cells = cells;
+    std::vector<double> gx, gw;
+    gauss_rule(config_.j_gauss, gx, gw);
+    constexpr double pi = 3.14159265358979323846;
+    std::vector<double> xy;
+    const int arcs = config_.j_arcs;
+    const double d = 2 * pi / arcs;
+    for (int m = 0; m < arcs; ++m)
+      for (std::size_t g = 0; g < gx.size(); ++g) {
+        const double t = -pi + d * (m + 0.5 * (1 + gx[g]));
+        xy.insert(xy.end(), {layout_.tip_x + radius * std::cos(t), layout_.tip_y + radius * std::sin(t)});
+        c.w.push_back(0.5 * d * gw[g] * radius);
+        c.th.push_back(t);
+      }
+    c.contour = shape_functions(xy, 2, "J-contour");
+    std::vector<double> g4x, g4w;
+    gauss_rule(4, g4x, g4w);
+    std::vector<double> dxy;
+    const double dr = radius / cells, dt = 2 * pi / cells;
+    for (int i = 0; i < cells; ++i)
+      for (int k = 0; k < cells; ++k)
+        for (std::size_t p = 0; p < 4; ++p)
+          for (std::size_t q = 0; q < 4; ++q) {
+            const double r = dr * (i + 0.5 * (1 + g4x[p]));
+            const double t = -pi + dt * (k + 0.5 * (1 + g4x[q]));
+            dxy.insert(dxy.end(), {layout_.tip_x + r * std::cos(t), layout_.tip_y + r * std::sin(t)});
+            c.dw.push_back(0.25 * dr * dt * g4w[p] * g4w[q] * r);
+          }
+    c.domain = shape_functions(dxy, 2, "J-domain");
+    contours_.push_back(std::move(c));
+    return contours_.back();
+  }
+
+  std::vector<double> probe(const mls::ShapeFunctions<T>& sf, const View1<T>& coeff) const {
+    Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace> out("polymech::efg::fields", static_cast<std::size_t>(sf.points));
+    detail::interpolate(sf, coeff, out);
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), out);
+    std::vector<double> r(static_cast<std::size_t>(sf.points) * 6);
+    for (Index i = 0; i < sf.points; ++i)
+      for (int c = 0; c < 6; ++c) r[static_cast<std::size_t>(i) * 6 + static_cast<std::size_t>(c)] = static_cast<double>(h(i, c));
+    return r;
+  }
+
+  static void to_device(const Eigen::VectorXd& x, View1<T>& v, const char* label) {
+    if (v.extent(0) != static_cast<std::size_t>(x.size())) v = View1<T>(std::string(label), static_cast<std::size_t>(x.size()));
+    auto h = Kokkos::create_mirror_view(v);
+    for (Eigen::Index i = 0; i < x.size(); ++i) h(static_cast<std::size_t>(i)) = static_cast<T>(x(i));
+    Kokkos::deep_copy(v, h);
+  }
+
+  void sync_dynamic() {
+    to_device(ud_, u_, "polymech::efg::coefficients");
+    to_device(vd_, v_, "polymech::efg::velocity_coefficients");
+    to_device(ad_, a_, "polymech::efg::acceleration_coefficients");
+  }
+
   // Node pairs whose supports overlap (|x_I - x_J| < dm_I + dm_J), each row sorted, the diagonal included.
   void build_pattern() {
     const Index n = nodes();
@@ -394,9 +605,19 @@ class Efg {
   std::vector<Index> cols_host_;
   Kokkos::View<Offset*, MemSpace> row_ptr_;
   View1<Index> cols_;
-  View1<T> u_;
+  View1<T> u_, v_, a_;
   std::vector<double> u_host_;
   Timings timings_;
+  bool assembled_ = false;
+  SparseMatrix K_, M_;
+  Eigen::VectorXd f_, ud_, vd_, ad_;
+  Eigen::SimplicialLDLT<SparseMatrix> keff_;
+  double beta_ = 0.25, dt_ = 0.0, time_ = 0.0;
+  std::int64_t step_ = 0;
+  std::vector<ContourCache> contours_;
+  mls::ShapeFunctions<T> cod_sf_;
+  bool cod_ready_ = false;
+  double cod_x_ = 0.0;
 };
 
 }  // namespace polymech::efg
