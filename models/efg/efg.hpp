@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/archive.hpp"
 #include "core/types.hpp"
 #include "efg/config.hpp"
 #include "efg/setup.hpp"
@@ -350,6 +351,33 @@ class Efg {
     time_ += dt;
     ++step_;
     timings_.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    sync_dynamic();
+  }
+
+  // Checkpoint of a dynamic run (models::run's protocol): the nodal coefficients of u, v, a, the time and
+  // the step; the matrices are rebuilt from the configuration and the factorisation from dt on load.
+  void save(models::Archive& ar, const std::string& prefix) const {
+    auto vec = [](const Eigen::VectorXd& x) { return std::vector<double>(x.data(), x.data() + x.size()); };
+    ar.put_vector(prefix + "u", vec(ud_));
+    ar.put_vector(prefix + "v", vec(vd_));
+    ar.put_vector(prefix + "a", vec(ad_));
+    ar.put(prefix + "time", time_);
+    ar.put(prefix + "dt", dt_);
+    ar.put(prefix + "step", step_);
+  }
+  void load(const models::Archive& ar, const std::string& prefix) {
+    const double dt = ar.get<double>(prefix + "dt");
+    start_dynamic(dt);
+    auto vec = [&](const std::string& k, Eigen::VectorXd& x) {
+      const auto v = ar.get_vector<double>(prefix + k);
+      if (v.size() != static_cast<std::size_t>(x.size())) throw std::runtime_error("EFG checkpoint: '" + prefix + k + "' has the wrong size");
+      for (std::size_t i = 0; i < v.size(); ++i) x(static_cast<Eigen::Index>(i)) = v[i];
+    };
+    vec("u", ud_);
+    vec("v", vd_);
+    vec("a", ad_);
+    time_ = ar.get<double>(prefix + "time");
+    step_ = ar.get<std::int64_t>(prefix + "step");
     sync_dynamic();
   }
 
