@@ -61,52 +61,72 @@ KOKKOS_INLINE_FUNCTION Offset find_col(const View1<Index>& cols, Offset b, Offse
   return b;
 }
 
-// seed 004 eq. (8): K_IJ += w_q B_I^T D B_J at every Gauss point q, for every pair of its nodes, into the
-// 2x2 blocks (4 values per pattern entry, row-major) of the node pattern.
+// The entries of the shape-function rows that belong to each node, in increasing point order: node I's
+// entries are node_entry(node_ptr(I)) .. node_entry(node_ptr(I + 1) - 1), at the points node_point(..).
+// (Built on the host: the assembly below runs one node per thread, with no atomics, so the sums are
+// in a fixed order whatever the thread count.)
+struct NodeEntries {
+  Kokkos::View<Offset*, MemSpace> node_ptr;
+  View1<Offset> node_entry;
+  View1<Index> node_point;
+};
+
 template <class T>
-void assemble_stiffness(const mls::ShapeFunctions<T>& sf, const View1<T>& weight, const Kokkos::View<Offset*, MemSpace>& row_ptr,
-                        const View1<Index>& cols, const View1<T>& values, T lam, T mu) {
-  const auto rows = sf.rows;
-  const auto dphi = sf.dphi;
-  const T c11 = lam + T(2) * mu;
-  Kokkos::parallel_for(
-      "polymech::efg::stiffness", range(sf.points), KOKKOS_LAMBDA(const Index q) {
-        const T w = weight(q);
-        const Offset b = rows.offsets(q), e = rows.offsets(q + 1);
-        for (Offset ka = b; ka < e; ++ka) {
-          const Index na = rows.neighbors(ka);
-          const T ax = dphi(ka, 0) * w, ay = dphi(ka, 1) * w;
-          const Offset rb = row_ptr(na), re = row_ptr(na + 1);
-          for (Offset kb = b; kb < e; ++kb) {
-            const Index nb = rows.neighbors(kb);
-            const T bx = dphi(kb, 0), by = dphi(kb, 1);
-            const Offset s = find_col(cols, rb, re, nb);
-            Kokkos::atomic_add(&values(4 * s + 0), ax * c11 * bx + ay * mu * by);
-            Kokkos::atomic_add(&values(4 * s + 1), ax * lam * by + ay * mu * bx);
-            Kokkos::atomic_add(&values(4 * s + 2), ay * lam * bx + ax * mu * by);
-            Kokkos::atomic_add(&values(4 * s + 3), ay * c11 * by + ax * mu * bx);
-          }
-        }
-      });
+NodeEntries node_entries(const mls::ShapeFunctions<T>& sf, Index nodes) {
+  auto off = Kokkos::create_mirror_view_and_copy(HostSpace(), sf.rows.offsets);
+  auto nb = Kokkos::create_mirror_view_and_copy(HostSpace(), sf.rows.neighbors);
+  NodeEntries e;
+  e.node_ptr = Kokkos::View<Offset*, MemSpace>("polymech::efg::node_ptr", static_cast<std::size_t>(nodes) + 1);
+  const auto total = static_cast<std::size_t>(sf.rows.num_pairs);
+  e.node_entry = View1<Offset>("polymech::efg::node_entry", total + 1);
+  e.node_point = View1<Index>("polymech::efg::node_point", total + 1);
+  auto hp = Kokkos::create_mirror_view(e.node_ptr);
+  auto he = Kokkos::create_mirror_view(e.node_entry);
+  auto hq = Kokkos::create_mirror_view(e.node_point);
+  std::vector<Offset> count(static_cast<std::size_t>(nodes) + 1, 0);
+  for (std::size_t k = 0; k < total; ++k) ++count[static_cast<std::size_t>(nb(k)) + 1];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(nodes); ++i) count[i + 1] += count[i];
+  for (std::size_t i = 0; i <= static_cast<std::size_t>(nodes); ++i) hp(i) = count[i];
+  for (Index q = 0; q < sf.points; ++q)
+    for (Offset k = off(q); k < off(q + 1); ++k) {
+      const auto slot = static_cast<std::size_t>(count[static_cast<std::size_t>(nb(k))]++);
+      he(slot) = k;
+      hq(slot) = q;
+    }
+  Kokkos::deep_copy(e.node_ptr, hp);
+  Kokkos::deep_copy(e.node_entry, he);
+  Kokkos::deep_copy(e.node_point, hq);
+  return e;
 }
 
-// seed 004 eq. (7): M_IJ += w_q rho phi_I phi_J (one value per pattern entry; the same for both components).
+// seed 004 eqs. (7), (8): K_IJ += w_q B_I^T D B_J and M_IJ += w_q rho phi_I phi_J at every Gauss point q
+// of node I's support, for every node J of q's row, into the 2x2 blocks (4 values per pattern entry,
+// row-major) and the mass values (1 per entry) of the node pattern. One node (pattern row) per thread.
 template <class T>
-void assemble_mass(const mls::ShapeFunctions<T>& sf, const View1<T>& weight, const Kokkos::View<Offset*, MemSpace>& row_ptr,
-                   const View1<Index>& cols, const View1<T>& values, T rho) {
+void assemble_stiffness_mass(const mls::ShapeFunctions<T>& sf, const NodeEntries& ne, const View1<T>& weight,
+                             const Kokkos::View<Offset*, MemSpace>& row_ptr, const View1<Index>& cols, const View1<T>& values,
+                             const View1<T>& mass, T lam, T mu, T rho) {
   const auto rows = sf.rows;
   const auto phi = sf.phi;
+  const auto dphi = sf.dphi;
+  const T c11 = lam + T(2) * mu;
+  const auto n = static_cast<std::int64_t>(ne.node_ptr.extent(0)) - 1;
   Kokkos::parallel_for(
-      "polymech::efg::mass", range(sf.points), KOKKOS_LAMBDA(const Index q) {
-        const T w = weight(q) * rho;
-        const Offset b = rows.offsets(q), e = rows.offsets(q + 1);
-        for (Offset ka = b; ka < e; ++ka) {
-          const Index na = rows.neighbors(ka);
-          const T pa = phi(ka) * w;
-          const Offset rb = row_ptr(na), re = row_ptr(na + 1);
-          for (Offset kb = b; kb < e; ++kb) {
+      "polymech::efg::stiffness_mass", range(n), KOKKOS_LAMBDA(const std::int64_t ia) {
+        const Offset rb = row_ptr(ia), re = row_ptr(ia + 1);
+        for (Offset t = ne.node_ptr(ia); t < ne.node_ptr(ia + 1); ++t) {
+          const Offset ka = ne.node_entry(t);
+          const Index q = ne.node_point(t);
+          const T w = weight(q);
+          const T ax = dphi(ka, 0) * w, ay = dphi(ka, 1) * w, pa = phi(ka) * w * rho;
+          for (Offset kb = rows.offsets(q); kb < rows.offsets(q + 1); ++kb) {
+            const T bx = dphi(kb, 0), by = dphi(kb, 1);
             const Offset s = find_col(cols, rb, re, rows.neighbors(kb));
-            Kokkos::atomic_add(&values(s), pa * phi(kb));
+            values(4 * s + 0) += ax * c11 * bx + ay * mu * by;
+            values(4 * s + 1) += ax * lam * by + ay * mu * bx;
+            values(4 * s + 2) += ay * lam * bx + ax * mu * by;
+            values(4 * s + 3) += ay * c11 * by + ax * mu * bx;
+            mass(s) += pa * phi(kb);
           }
         }
       });
@@ -236,9 +256,10 @@ class Efg {
 
     build_pattern();
     View1<T> values("polymech::efg::stiffness_values", static_cast<std::size_t>(4 * cols_host_.size()));
-    detail::assemble_stiffness(sf, qw, row_ptr_, cols_, values, static_cast<T>(lam_), static_cast<T>(mu_));
     View1<T> mvalues("polymech::efg::mass_values", cols_host_.size());
-    detail::assemble_mass(sf, qw, row_ptr_, cols_, mvalues, static_cast<T>(config_.density));
+    const auto entries = detail::node_entries(sf, n);
+    detail::assemble_stiffness_mass(sf, entries, qw, row_ptr_, cols_, values, mvalues, static_cast<T>(lam_), static_cast<T>(mu_),
+                                    static_cast<T>(config_.density));
     auto hm = Kokkos::create_mirror_view_and_copy(HostSpace(), mvalues);
     {
       std::vector<Eigen::Triplet<double, int>> mt;
