@@ -124,6 +124,17 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     if (!(out.dt <= 10 * c.h_max / cd))
       dyn->fail("dt", "= " + format_number(out.dt) + " s is above 10 h_max / c_d = " + format_number(10 * c.h_max / cd) +
                           " s: the step would not resolve the waves");
+    c.growth_speed = dyn->real("growth_speed", 0.0, Range{0.0, 1e4, false, false, "m/s (0: a stationary crack)"});
+    c.growth_start = dyn->real("growth_start", 0.0, Range{0.0, 1e3, false, false, "s"});
+    c.final_crack_length = dyn->real("final_crack_length", c.crack_length, pl::length());
+    if (c.growth_speed > 0) {
+      const double cs = std::sqrt(mu / c.density);
+      if (!(c.growth_speed < 0.9 * cs)) dyn->fail("growth_speed", "must be below 0.9 c_s = " + format_number(0.9 * cs) + " m/s");
+      if (!(c.final_crack_length > c.crack_length)) dyn->fail("final_crack_length", "must exceed plate.crack_length for a growing crack");
+      const double ahead = c.crack == efg::CrackKind::edge ? c.width - c.final_crack_length : 0.5 * c.width - c.final_crack_length;
+      for (double r : c.j_radii)
+        if (!(r < ahead)) dyn->fail("final_crack_length", "leaves " + format_number(ahead) + " m ahead of the final tip, less than the J-integral radius " + format_number(r) + " m");
+    }
     dyn->finish();
     out.cost.steps = steps;
     out.cost.step_name = "Newmark steps";

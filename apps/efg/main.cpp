@@ -65,9 +65,17 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, cons
         peak_t = t_us;
         peak_spread = hi > 0 ? (hi - lo) / hi : 0.0;
       }
-      if (!opt.quiet) std::printf("t = %7.3f us: K/(s sqrt(pi a)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, f, hi > 0 ? 100 * (hi - lo) / hi : 0.0, cod);
+      if (!opt.quiet)
+        std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, 1e3 * model.crack_length(), f,
+                    hi > 0 ? 100 * (hi - lo) / hi : 0.0, cod);
     }
-    if (s < steps) model.step();
+    if (s < steps) {
+      if (c.growth_speed > 0 && model.time() >= c.growth_start - 1e-3 * scene.dt) {
+        const double a = std::min(c.final_crack_length, c.crack_length + c.growth_speed * (model.time() - c.growth_start));
+        if (a > model.crack_length()) model.set_crack_length(a, a < c.final_crack_length ? c.growth_speed : 0.0);
+      }
+      model.step();
+    }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto& t = model.timings();
@@ -77,7 +85,12 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, cons
   j["state"] = c.plane_strain ? "plane_strain" : "plane_stress";
   j["dt"] = scene.dt;
   j["steps"] = steps;
-  j["sif_stationary"] = sif;
+  j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = sif;
+  if (c.growth_speed > 0) {
+    j["growth_speed"] = c.growth_speed;
+    j["growth_start_us"] = c.growth_start * 1e6;
+    j["final_crack_length"] = c.final_crack_length;
+  }
   j["crack_opening"] = opening;
   j["sif_peak"] = peak;
   j["sif_peak_time_us"] = peak_t;

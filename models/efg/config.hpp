@@ -52,6 +52,13 @@ struct Config {
   std::vector<double> j_radii{0.2, 0.25, 0.3, 0.35, 0.4};
   int j_arcs = 20;
   int j_gauss = 4;
+  // Crack growth at a prescribed speed (seed 004 §3.3): from t = growth_start [s] both tips run at
+  // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack); the crack line
+  // carries no node along the path (a node on it would be seen from both faces once the crack passed;
+  // the background cells keep their edges on the line). growth_speed = 0: a stationary crack.
+  double growth_start = 0.0;
+  double growth_speed = 0.0;
+  double final_crack_length = 0.0;
   EffectSet effects;
 };
 

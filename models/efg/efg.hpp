@@ -175,7 +175,7 @@ class Efg {
  public:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-  explicit Efg(const Config& c) : config_(c), layout_(make_layout(c)) {
+  explicit Efg(const Config& c) : config_(c), layout_(make_layout(c)), initial_a_(c.crack_length) {
     if (c.gauss < 1) throw std::invalid_argument("efg: gauss must be >= 1");
     nodes_ = detail::to_points<T>(layout_.nodes, 2, "polymech::efg::nodes");
     dm_ = View1<T>("polymech::efg::support_radius", layout_.dm.size());
@@ -441,10 +441,48 @@ class Efg {
     JResult r;
     r.radius = radius;
     r.j = j;
-    r.k = std::sqrt(std::max(0.0, j) * effective_modulus(config_));
-    r.factor = config_.stress > 0 ? r.k / (config_.stress * std::sqrt(pi * config_.crack_length)) : 0.0;
+    r.k = std::sqrt(std::max(0.0, j) * effective_modulus(config_) / velocity_factor(speed_));
+    r.factor = config_.stress > 0 ? r.k / (config_.stress * std::sqrt(pi * initial_a_)) : 0.0;
     return r;
   }
+
+  // J' = A_I(v) K_I^2 / E' for a crack running at v (Freund; Nishioka & Atluri): A_I = v^2 alpha_d /
+  // ((1 - nu) c_s^2 D), D = 4 alpha_d alpha_s - (1 + alpha_s^2)^2, alpha = sqrt(1 - v^2 / c^2); with the
+  // plane-stress nu' = nu / (1 + nu) in plane stress. 1 at v = 0.
+  double velocity_factor(double v) const {
+    if (!(v > 0)) return 1.0;
+    const double nu = config_.plane_strain ? config_.poisson : config_.poisson / (1 + config_.poisson);
+    const double cs2 = mu_ / config_.density, cd2 = (lam_ + 2 * mu_) / config_.density;
+    const double ad = std::sqrt(std::max(0.0, 1 - v * v / cd2)), as = std::sqrt(std::max(0.0, 1 - v * v / cs2));
+    const double D = 4 * ad * as - (1 + as * as) * (1 + as * as);
+    return v * v * ad / ((1 - nu) * cs2 * D);
+  }
+
+  // Moves the tip(s) to half-length (or length) a running at `speed`: the crack segment, the shape
+  // functions, K and M are rebuilt (the nodal coefficients stay), K_eff refactorised, the J' paths and the
+  // opening probe follow the tip. The residual r of the next step carries the released forces.
+  void set_crack_length(double a, double speed) {
+    config_.crack_length = a;
+    speed_ = speed;
+    if (config_.crack == CrackKind::edge) {
+      layout_.crack[2] = a;
+    } else if (config_.crack == CrackKind::centre) {
+      layout_.crack[0] = -a;
+      layout_.crack[2] = a;
+    }
+    layout_.tip_x = a;
+    auto hc = Kokkos::create_mirror_view(crack_);
+    for (std::size_t s = 0; s < layout_.crack.size() / 4; ++s)
+      for (int k = 0; k < 4; ++k) hc(s, k) = static_cast<T>(layout_.crack[4 * s + static_cast<std::size_t>(k)]);
+    Kokkos::deep_copy(crack_, hc);
+    contours_.clear();
+    cod_ready_ = false;
+    assemble();
+    SparseMatrix keff = K_ + M_ * (1.0 / (beta_ * dt_ * dt_));
+    keff_.compute(keff);
+    if (keff_.info() != Eigen::Success) throw std::runtime_error("EFG: the effective stiffness factorisation failed");
+  }
+  double crack_length() const { return config_.crack_length; }
 
   // Crack opening at x of the current (dynamic or static) solution.
   double dynamic_opening_at(double x) {
@@ -664,6 +702,8 @@ class Efg {
   double beta_ = 0.25, dt_ = 0.0, time_ = 0.0;
   std::int64_t step_ = 0;
   std::vector<ContourCache> contours_;
+  double speed_ = 0.0;
+  double initial_a_ = 0.0;
   mls::ShapeFunctions<T> cod_sf_;
   bool cod_ready_ = false;
   double cod_x_ = 0.0;

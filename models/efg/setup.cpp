@@ -153,6 +153,13 @@ Layout make_layout(const Config& c) {
     if (i + 1 < v.size()) h = std::max(h, v[i + 1] - v[i]);
     return h;
   };
+  // a growing crack: no node on the crack line along its path [a, final_crack_length) (a node there
+  // would be seen from both faces once the crack has passed it)
+  const bool growing = c.growth_speed > 0 && c.final_crack_length > a;
+  auto on_path = [&](double x) {
+    const double ax = c.crack == CrackKind::centre ? std::abs(x) : x;
+    return growing && ax > a - 1e-9 * hmin_all && ax < c.final_crack_length - 1e-9 * hmin_all;
+  };
   auto on_crack = [&](double x) {
     if (c.crack == CrackKind::edge) return x < a - 1e-9 * hmin_all;
     if (c.crack == CrackKind::centre) return std::abs(x) < a - 1e-9 * hmin_all;
@@ -165,6 +172,7 @@ Layout make_layout(const Config& c) {
       const double d = c.support_factor * std::max(hx, hy);
       double x = xs[i], y = ys[j];
       const bool crack_line = c.crack != CrackKind::none && y == 0.0;
+      if (crack_line && on_path(x)) continue;
       if (crack_line && on_crack(x)) {
         L.nodes.insert(L.nodes.end(), {x, -eps, x, eps});
         L.dm.insert(L.dm.end(), {d, d});
