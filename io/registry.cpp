@@ -2,6 +2,7 @@
 
 #include "io/dem_pour_scene.hpp"
 #include "io/dem_scene.hpp"
+#include "io/efg_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
@@ -42,6 +43,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_dem_pour_scene(f); },
        [](const std::filesystem::path&) { return std::string("dem_pour"); },
        [](const std::filesystem::path& f) { return load_dem_pour_scene(f).cost; }},
+      {"efg", "element-free Galerkin cracked plates, MLS + J-integral (seed 004)", {"efg"},
+       [](const std::filesystem::path& f) { load_efg_scene(f); },
+       [](const std::filesystem::path&) { return std::string("efg"); },
+       [](const std::filesystem::path& f) { return load_efg_scene(f).cost; }},
   };
   return kinds;
 }

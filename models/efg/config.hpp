@@ -1,0 +1,65 @@
+// The element-free Galerkin model of a cracked plate (seed 004, Hagihara et al.), as plain data: what
+// io/ fills from a scene and tests fill directly. Lengths in m, stresses in Pa, unit thickness.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "effects.hpp"
+
+namespace polymech::efg {
+
+enum class CrackKind { none, edge, centre };
+// tension: traction +-stress on the top and bottom edges, the rigid-body modes held at points where
+// symmetry makes the held components zero; patch: the linear field `patch` imposed on the whole
+// boundary (the patch test).
+enum class Loading { tension, patch };
+
+struct Config {
+  CrackKind crack = CrackKind::edge;
+  Loading loading = Loading::tension;
+  // The plate [0, width] x [-height/2, height/2] (edge crack from (0, 0) to (crack_length, 0)) or
+  // [-width/2, width/2] x [-height/2, height/2] (centre crack from (-crack_length, 0) to (crack_length, 0):
+  // crack_length is the half-length a).
+  double width = 1.0;
+  double height = 3.0;
+  double crack_length = 0.5;
+  // Node lines: spacing h_min at the crack tip(s) (x) and the crack line (y), growing by `growth` per
+  // unit distance (dh/ds) up to h_max. Background cells are the rectangles between the node lines.
+  double h_max = 0.05;
+  double h_min = 0.05;
+  double growth = 0.3;
+  // The node lines are refined about x = tip + tip_offset x h_min: 0 puts a node on the tip, 0.5 puts
+  // the tip half-way between two nodes (a hard case of the issue).
+  double tip_offset = 0.0;
+  // Interior nodes off the crack line moved by up to jitter x the local spacing (0: none).
+  double jitter = 0.0;
+  std::uint64_t seed = 1;
+  // Support radius of node I: support_factor x the largest spacing of the node lines through it.
+  double support_factor = 1.5;
+  int gauss = 10;  // Gauss points per cell and direction (the paper: 10 x 10)
+  // Material (seed 004 §3.1: E = 7562 MPa, nu = 0.394, rho = 1191 kg/m^3).
+  double young = 7.562e9;
+  double poisson = 0.394;
+  double density = 1191.0;
+  bool plane_strain = true;
+  double stress = 1e7;              // applied traction [Pa]
+  double penalty = 1e6;             // penalty stiffness / young (essential conditions by penalty)
+  double min_moment_ratio = 1e-8;   // det(A) / (A00 A11 A22) below this: an error naming the point
+  std::array<double, 6> patch{};    // ux = c0 + c1 x + c2 y, uy = c3 + c4 x + c5 y (Loading::patch)
+  // J-integral: circular contours around the (right) tip, radii in m; arcs x Gauss points per arc.
+  std::vector<double> j_radii{0.2, 0.25, 0.3, 0.35, 0.4};
+  int j_arcs = 20;
+  int j_gauss = 4;
+  // Crack growth at a prescribed speed (seed 004 §3.3): from t = growth_start [s] both tips run at
+  // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack); the crack line
+  // carries no node along the path (a node on it would be seen from both faces once the crack passed;
+  // the background cells keep their edges on the line). growth_speed = 0: a stationary crack.
+  double growth_start = 0.0;
+  double growth_speed = 0.0;
+  double final_crack_length = 0.0;
+  EffectSet effects;
+};
+
+}  // namespace polymech::efg

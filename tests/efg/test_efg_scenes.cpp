@@ -1,0 +1,88 @@
+// EFG scenes: the shipped scenes/efg/*.toml load with the handbook factor of their plate; bad scenes are
+// refused naming file:line and key (a contour leaving the plate, h_max below h_min, float precision).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "io/efg_scene.hpp"
+#include "support/error_messages.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+using polymech::testing::line_of;
+using polymech::testing::replace_once;
+
+namespace {
+
+const std::string kBase = R"(title = "edge crack"
+
+[model]
+kind = "efg"
+effects = []
+
+[plate]
+crack = "edge"
+width = 1.0
+height = 3.0
+crack_length = 0.5
+
+[material]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+
+[loading]
+stress = 1.0e6
+
+[discretization]
+h_min = 0.0125
+h_max = 0.05
+gauss = 4
+
+[j_integral]
+radii = [0.2, 0.3]
+)";
+
+void expect_error(const std::string& text, const std::string& at, const std::vector<std::string>& fragments) {
+  polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_efg_scene(p); }, line_of(text, at), fragments);
+}
+
+}  // namespace
+
+TEST(EfgScenes, EveryShippedSceneLoads) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(src) / "scenes" / "efg")) {
+    if (e.path().extension() != ".toml") continue;
+    const auto s = io::load_efg_scene(e.path());
+    EXPECT_GT(s.handbook, 1.0) << e.path();
+    EXPECT_GT(s.cost.items, 100.0) << e.path();
+    ++n;
+  }
+  EXPECT_GE(n, 2);
+}
+
+TEST(EfgScenes, BaseLoadsWithTadasFactor) {
+  polymech::testing::TempDir dir;
+  const auto s = io::load_efg_scene(dir.write("scene.toml", kBase));
+  EXPECT_NEAR(s.handbook, 1.12 - 0.231 * 0.5 + 10.55 * 0.25 - 21.72 * 0.125 + 30.39 * 0.0625, 1e-12);
+  EXPECT_TRUE(s.config.plane_strain);
+  EXPECT_EQ(s.config.j_radii.size(), 2u);
+  // draft coarsens the spacing x4
+  const auto d = io::load_efg_scene(dir.write("scene.toml", kBase), "", "draft");
+  EXPECT_NEAR(d.config.h_min, 4 * s.config.h_min, 1e-15);
+}
+
+TEST(EfgScenes, BadScenesAreRefusedAtTheirKey) {
+  expect_error(replace_once(kBase, "radii = [0.2, 0.3]", "radii = [0.2, 0.6]"), "radii = [0.2, 0.6]",
+               {"j_integral.radii", "inside the plate"});
+  expect_error(replace_once(kBase, "h_max = 0.05", "h_max = 0.01"), "h_max = 0.01", {"discretization.h_max", "h_min"});
+  expect_error(replace_once(kBase, "crack_length = 0.5", "crack_length = 0.9"), "crack_length = 0.9", {"plate.crack_length"});
+  expect_error(replace_once(kBase, "effects = []", "effects = []\nprecision = \"float\""), "precision = \"float\"",
+               {"model.precision", "double"});
+  expect_error(replace_once(kBase, "stress = 1.0e6", "stress = nan"), "stress = nan", {"loading.stress"});
+}

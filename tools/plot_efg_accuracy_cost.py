@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Accuracy-cost of the EFG static edge crack (issue 14): K_I error against the handbook and J path
+spread versus node count, support factor and Gauss points per cell, with wall time. Writes scene variants
+of scenes/efg/edge_crack_static.toml, runs build/ci/bin/efg on each (1 thread), and writes
+<out>/accuracy_cost.csv and <out>/accuracy_cost.png.
+  /usr/bin/python3 tools/plot_efg_accuracy_cost.py [--app build/ci/bin/efg] [--out docs/figures/efg]"""
+import argparse
+import csv
+import json
+import os
+import re
+import subprocess
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def variant(text, key, value):
+    return re.sub(rf"^{key} = [^#\n]*", f"{key} = {value}", text, count=1, flags=re.M)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--app", default="build/ci/bin/efg")
+    ap.add_argument("--scene", default="scenes/efg/edge_crack_static.toml")
+    ap.add_argument("--out", default="docs/figures/efg")
+    a = ap.parse_args()
+    base = open(a.scene).read()
+    rows = []
+    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
+    with tempfile.TemporaryDirectory() as tmp:
+        for scale in (4.0, 2.0, 1.0, 0.5):
+            for factor in (1.5, 2.0):
+                for gauss in (4, 10):
+                    t = variant(base, "h_min", f"{0.0005 * scale:.6g}")
+                    t = variant(t, "h_max", f"{0.002 * scale:.6g}")
+                    t = variant(t, "support_factor", factor)
+                    t = variant(t, "gauss", gauss)
+                    path = os.path.join(tmp, "scene.toml")
+                    open(path, "w").write(t)
+                    out = os.path.join(tmp, "run")
+                    subprocess.run([a.app, "--scene", path, "--out", out, "--threads", "1", "--quiet"], check=True, env=env,
+                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                    s = json.load(open(os.path.join(out, "summary.json")))
+                    rows.append({"nodes": s["nodes"], "h_min_m": 0.0005 * scale, "support_factor": factor, "gauss": gauss,
+                                 "sif_error": s["sif_error"], "sif_max_abs_error": s["sif_max_abs_error"],
+                                 "j_path_difference": s["j_path_spread"], "wall_seconds": s["wall_seconds"], "is_float": 0})
+                    print(rows[-1])
+    os.makedirs(a.out, exist_ok=True)
+    with open(os.path.join(a.out, "accuracy_cost.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    for factor in (1.5, 2.0):
+        for gauss in (4, 10):
+            sel = [r for r in rows if r["support_factor"] == factor and r["gauss"] == gauss]
+            lab = f"support {factor}, {gauss}x{gauss} Gauss"
+            ax[0].loglog([r["nodes"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], "o-", label=lab)
+            ax[1].loglog([r["wall_seconds"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], "o-", label=lab)
+    ax[0].set(xlabel="nodes", ylabel="largest |K/K_handbook - 1| over 5 paths", title="edge crack a/W = 0.5")
+    ax[1].set(xlabel="wall time [s] (1 thread)", ylabel="largest |K/K_handbook - 1| over 5 paths", title="accuracy-cost")
+    for x in ax:
+        x.grid(alpha=0.3, which="both")
+        x.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "accuracy_cost.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()
