@@ -2,6 +2,7 @@
 
 #include "io/dem_scene.hpp"
 #include "io/helmholtz_scene.hpp"
+#include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
 
@@ -37,6 +38,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_dem_scene(f); },
        [](const std::filesystem::path&) { return std::string("dem_benchmark"); },
        [](const std::filesystem::path& f) { return load_dem_scene(f).cost; }},
+      {"isph", "stabilized ISPH with IGCB walls: hydrostatic tank, dam break (seed 002 paper 4)", {"isph"},
+       [](const std::filesystem::path& f) { load_isph_scene(f); },
+       [](const std::filesystem::path&) { return std::string("isph"); },
+       [](const std::filesystem::path& f) { return load_isph_scene(f).cost; }},
   };
   return kinds;
 }
