@@ -10,9 +10,11 @@ namespace polymech::io {
 
 namespace pl = polymech::io::plausible;
 
-// Rates: docs/PERFORMANCE.md, section "ISPH (stage 1)": the dam break at 1 thread, about 1e5
-// particle-steps/s with ~35 BiCGSTAB iterations per step. Memory: ~40 reals per particle and wall
-// point plus the neighbour lists (~50 pairs per particle in 2D, ~250 in 3D, one int each, three lists).
+// Rates: docs/PERFORMANCE.md, section "ISPH (stage 1)", 1 thread: a step costs about one
+// particle-PPE-iteration per particle and BiCGSTAB iteration at 8.7e5 /s (the dam break at 3200
+// particles: 99 iterations per step, 95 % of the step in the PPE); iterations ~ 1.75 sqrt(N) in 2D and
+// ~ 1.4 N^(1/3) in 3D (measured at 200 to 3200 particles). Memory: ~40 reals per particle and wall
+// point plus the three neighbour lists (~35 pairs per particle in 2D, ~150 in 3D, one int each).
 CostEstimate isph_cost(double particles, double wall_points, int dim, double steps) {
   CostEstimate c;
   c.method = "stabilized ISPH (IGCB walls)";
@@ -24,10 +26,11 @@ CostEstimate isph_cost(double particles, double wall_points, int dim, double ste
   c.steps = steps;
   c.step_name = "steps";
   c.bytes = 64e6 + (particles + wall_points) * 40.0 * 8.0 + 3.0 * (particles + wall_points) * pairs_per * 4.0;
-  const double rate = dim == 2 ? 1e5 : 1.5e4;
-  c.seconds = steps * particles / rate;
-  c.rate = dim == 2 ? "1e5 particle-steps/s (2D), docs/PERFORMANCE.md 'ISPH (stage 1)', 1 thread"
-                    : "1.5e4 particle-steps/s (3D), docs/PERFORMANCE.md 'ISPH (stage 1)', 1 thread";
+  const double iterations = dim == 2 ? 1.75 * std::sqrt(particles) : 1.4 * std::cbrt(particles);
+  const double rate = dim == 2 ? 8.7e5 : 8.7e5 * 35.0 / 150.0;  // particle-iterations/s
+  c.seconds = steps * particles * std::max(iterations, 5.0) / rate;
+  c.rate = "8.7e5 particle-PPE-iterations/s in 2D (scaled by the pair count in 3D), about 1.75 sqrt(N) BiCGSTAB "
+           "iterations per step, docs/PERFORMANCE.md 'ISPH (stage 1)', 1 thread";
   return c;
 }
 

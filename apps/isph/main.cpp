@@ -153,6 +153,18 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
   j["ppe_last_residual"] = model.last_solve().residual;
   j["particles_put_back_inside"] = model.escaped();
   j["max_speed"] = max_speed(model);
+  {  // density drift: mean summation density of the particles off the free surface, over rho0
+    const auto rho = model.host_density();
+    const auto srf = model.host_surface();
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < rho.size(); ++i)
+      if (!srf[i]) {
+        sum += rho[i];
+        ++n;
+      }
+    j["interior_density_over_rho0"] = n > 0 ? sum / n / c.density : 0.0;
+  }
   j["diverged"] = stats.diverged;
   if (stats.diverged) j["reason"] = stats.reason;
   if (dam) {
