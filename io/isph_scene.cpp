@@ -43,8 +43,7 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   c.dim = static_cast<int>(s.model.integer("dimension", 2, 2, 3));
   c.wall = s.model.choice("wall", {"no_slip", "slip"}, "no_slip") == "slip" ? isph::WallCondition::slip
                                                                             : isph::WallCondition::no_slip;
-  if (c.effects.has("rigid_body"))
-    s.model.fail("effects", "lists \"rigid_body\": the floating body (eqs. (31)-(43)) is not implemented yet");
+  if (c.effects.has("rigid_body") && c.dim != 2) s.model.fail("effects", "lists \"rigid_body\": the body is 2D only");
   s.model.finish();
   out.header.set_accuracy(read_accuracy(root, accuracy, 0.0, "paper"));
   const double f = out.header.coarsening;
@@ -83,6 +82,24 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   if (out.case_name == "dam_break" && c.fluid[0] >= c.tank[0])
     tank.fail("water_width", "fills the tank: a dam break needs room for the surge");
   tank.finish();
+
+  if (const auto body = root.optional_table("body")) {
+    if (!c.effects.has("rigid_body")) body->fail_table("needs the effect \"rigid_body\" in model.effects");
+    c.body.diameter = body->real("diameter", pl::length());
+    c.body.centre[0] = body->real("x", pl::coordinate());
+    c.body.centre[1] = body->real("y", pl::coordinate());
+    c.body.density_ratio = body->real("density_ratio", Range{0.05, 20.0, false, false, "rho_body / rho_water"});
+    const double R = 0.5 * c.body.diameter;
+    if (c.body.diameter <= 2 * c.spacing) body->fail("diameter", "must be more than 2 particle spacings");
+    if (c.body.centre[0] - R < 0 || c.body.centre[0] + R > c.tank[0]) body->fail("x", "puts the body outside the tank");
+    if (c.body.centre[1] - R < 0 || c.body.centre[1] + R > c.tank[1]) body->fail("y", "puts the body outside the tank");
+    c.body.added_mass = body->real("added_mass", 1.0, Range{0.0, 10.0, false, false, "C_a (0: plain CSS as the paper)"});
+    c.body.release_time = body->real("release_time", 0.0, Range{0.0, 1e6, false, false, "s (held fixed until then)"});
+    out.draft_average_last = body->real("draft_average_last", 0.0, Range{0.0, 1e6, false, false, "s"});
+    body->finish();
+  } else if (c.effects.has("rigid_body")) {
+    s.model.fail("effects", "lists \"rigid_body\" but the scene has no [body] table");
+  }
 
   const SceneTable time = root.table("time");
   c.dt = f * time.real("dt", pl::time_step());

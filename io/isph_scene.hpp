@@ -21,6 +21,7 @@ struct IsphScene {
   double snapshot_every = 0.0;  // [s] (0: none)
   double sample_every = 0.0;    // [s] series (front, pressure error)
   double average_last = 0.0;    // [s] hydrostatic: pressure averaged over the last ... of the run
+  double draft_average_last = 0.0;  // [s] floating body: draft averaged over the last ... of the run
   std::int64_t steps = 0;       // end_time / dt
   isph::TimeStepLimit limit;
   CostEstimate cost;

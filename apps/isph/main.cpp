@@ -94,7 +94,27 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
 
   const bool dam = scene.case_name == "dam_break";
   const double a = c.fluid[0], tscale = std::sqrt(2 * c.gravity / a);
-  std::vector<double> t_col, it_col, res_col, q_col, v_col;
+  std::vector<double> t_col, it_col, res_col, q_col, v_col, by_col, draft_col;
+  const bool body = model.has_body();
+  double draft_sum = 0.0;
+  int draft_count = 0;
+  // the draft: the free surface away from the body (mean height of the surface particles more than one
+  // diameter from the centre, plus l0/2) minus the body's lowest point
+  auto draft_now = [&]() {
+    const auto x = model.host_positions();
+    const auto srf = model.host_surface();
+    const auto& b = model.body();
+    const double D_ = c.body.diameter;
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < srf.size(); ++i)
+      if (srf[i] && std::fabs(x[i * D] - b.centre[0]) > D_) {
+        sum += x[i * D + 1];
+        ++n;
+      }
+    const double level = n > 0 ? sum / n + 0.5 * c.spacing : c.fluid[1];
+    return level - (b.centre[1] - 0.5 * D_);
+  };
   nlohmann::json fronts = nlohmann::json::array();
   std::vector<double> psum;
   int pcount = 0;
@@ -123,6 +143,15 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
     it_col.push_back(model.last_solve().iterations);
     res_col.push_back(model.last_solve().residual);
     v_col.push_back(max_speed(model));
+    if (body) {
+      by_col.push_back(model.body().centre[1]);
+      const double d = draft_now();
+      draft_col.push_back(d / c.body.diameter);
+      if (scene.draft_average_last > 0 && t >= scene.end_time - scene.draft_average_last) {
+        draft_sum += d / c.body.diameter;
+        ++draft_count;
+      }
+    }
     if (dam) {
       const double Z = front_position(model) / a;
       q_col.push_back(Z);
@@ -177,9 +206,26 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
     j["hydrostatic_pressure_error_instantaneous"] = pressure_error(model, model.host_pressure());
     j["pressure_averaged_over_seconds"] = pcount * c.dt;
   }
+  if (body) {
+    const auto& b = model.body();
+    j["body_centre"] = {b.centre[0], b.centre[1]};
+    j["body_velocity"] = {b.v[0], b.v[1]};
+    j["body_angle"] = b.theta;
+    j["body_density_ratio"] = c.body.density_ratio;
+    j["body_area_by_quadrature"] = model.body_properties().area;
+    j["draft_over_diameter"] = draft_count > 0 ? draft_sum / draft_count : (draft_col.empty() ? 0.0 : draft_col.back());
+    j["draft_averaged_over_samples"] = draft_count;
+    j["archimedes_draft_over_diameter"] = pm::isph::archimedes_draft_over_diameter(c.body.density_ratio);
+  }
   j["files"] = {"summary.json", "series.csv", "ppe_residual_history.csv", xdmf.filename().string()};
   pm::io::Columns cols = {t_col, it_col, res_col, q_col, v_col};
   std::vector<std::string> head = {"time", "ppe_iterations", "ppe_residual", dam ? "front_Z" : "pressure_error", "max_speed"};
+  if (body) {
+    cols.push_back(by_col);
+    cols.push_back(draft_col);
+    head.push_back("body_y");
+    head.push_back("draft_over_diameter");
+  }
   pm::io::write_csv(opt.out / "series.csv", head, cols);
   std::vector<double> k_col, h_col;
   for (std::size_t k = 0; k < model.last_solve().history.size(); ++k) {

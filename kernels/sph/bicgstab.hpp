@@ -24,7 +24,7 @@ double dotp(const char* label, const View1<T>& a, const View1<T>& b, Index n) {
 }
 }  // namespace detail
 
-// x: initial guess on entry (warm start), solution on exit. Stops at |b - A x| / |b| <= tolerance.
+// x: initial guess on entry (warm start; replaced by zero when its residual exceeds |b|), solution on exit. Stops at |b - A x| / |b| <= tolerance.
 template <class Op, class T>
 solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x, const solvers::SolverOptions& o) {
   using solvers::SolveStatus;
@@ -54,6 +54,16 @@ solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x,
         p(i) = r(i);
       });
   double rel = std::sqrt(detail::dotp("polymech::sph::bicgstab_norm", r, r, n)) / bnorm;
+  if (rel > 1.0) {  // the warm start is worse than zero (the free-surface set changed): start from zero
+    Kokkos::parallel_for(
+        "polymech::sph::bicgstab_zero_start", range(n), KOKKOS_LAMBDA(const Index i) {
+          x(i) = T(0);
+          r(i) = b(i);
+          r0(i) = b(i);
+          p(i) = b(i);
+        });
+    rel = 1.0;
+  }
   res.history.push_back(rel);
   double rho = detail::dotp("polymech::sph::bicgstab_dot", r0, r, n);
   while (rel > o.tolerance) {

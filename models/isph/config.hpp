@@ -10,6 +10,16 @@ namespace polymech::isph {
 
 enum class WallCondition { no_slip, slip };  // eqs. (29)-(30) / (27)-(28)
 
+// A floating circular cylinder (2D) of IGCB cells (effect `rigid_body`, eqs. (31)-(43)).
+struct Body {
+  double centre[2] = {0.0, 0.0};  // initial centre [m]
+  double diameter = 0.0;          // [m] (0: no body)
+  double density_ratio = 0.8;     // rho_r / rho0
+  double added_mass = 1.0;         // C_a: the coupling treats C_a rho0 pi R^2 implicitly (0: the paper's plain CSS)
+  double release_time = 0.0;      // [s] held fixed (force still computed) until then: the pressure of the
+                                  // water started from rest needs a few hundred steps to become hydrostatic
+};
+
 struct Config {
   int dim = 2;                      // 2 (the paper's cases) or 3 (the hydrostatic tank)
   double spacing = 5e-3;            // l0 [m] (Table 1)
@@ -24,6 +34,7 @@ struct Config {
   double fluid[3] = {0.2, 0.1, 0.2};  // the initial water block, from the tank's lower corner (x = 0, y = 0)
   bool surface_correction = true;   // renormalised eq. (9) at free-surface particles (false: as printed)
   WallCondition wall = WallCondition::no_slip;
+  Body body;                        // used with the effect `rigid_body`
   double tolerance = 1e-8;          // PPE: relative residual
   int max_iterations = 2000;        // PPE: BiCGSTAB iterations per step
   EffectSet effects;

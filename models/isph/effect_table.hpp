@@ -13,9 +13,8 @@ inline const std::vector<EffectSpec>& effect_table() {
        {"polymech::sph::viscosity_fluid", "polymech::sph::viscosity_wall"}, "nothing (scratch shared with the PPE)"},
       {"stabilization", "density relaxation alpha (rho0 - rho^n) / dt^2 in the PPE source, eq. (4)", {}, {},
        "nothing (a term of the right-hand side)"},
-      {"rigid_body", "a floating rigid body of IGCB cells coupled through its integration points, eqs. (31)-(43) "
-                     "(not implemented yet: refused)",
-       {}, {}, "the body's cells and integration points"},
+      {"rigid_body", "a floating 2D cylinder of IGCB cells coupled through its integration points, eqs. (31)-(43)", {},
+       {"polymech::sph::place_body", "polymech::sph::body_force"}, "the body's cells (wall points) and their offsets"},
   };
   return specs;
 }

@@ -18,6 +18,7 @@
 // of IGCB (curved walls, the rigid body) is not implemented yet (docs/METHODS.md).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -75,6 +76,7 @@ class Isph {
                                                 std::to_string(D) + "D");
     viscosity_ = c.effects.has("viscosity");
     stabilization_ = c.effects.has("stabilization");
+    body_ = D == 2 && c.effects.has("rigid_body") && c.body.diameter > 0;
     const double l0 = c.spacing, re = c.radius_factor * l0;
     const double scale = sph::lattice_sum<D>(re, l0);
     par_.w = sph::Wendland<T, D>::make(re, scale);
@@ -90,6 +92,11 @@ class Isph {
     par_.surface_correction = c.surface_correction;
     build_fluid();
     build_walls();
+    if (body_) {
+      body_state_.centre[0] = c.body.centre[0];
+      body_state_.centre[1] = c.body.centre[1];
+      place_body_points();
+    }
     opts_.tolerance = c.tolerance;
     opts_.max_iterations = c.max_iterations;
     state_.add("u", f_.p.u);
@@ -116,6 +123,7 @@ class Isph {
     neighbors::for_each_row("polymech::sph::pressure_gradient", ff_, sph::FluidPressureGradient<T, D>{f_, par_});
     neighbors::for_each_row("polymech::sph::project", fw_, sph::WallPressureCorrect<T, D>{f_, wp_, par_});
     keep_inside();
+    if (body_) advance_body();
     ++step_;
   }
 
@@ -134,6 +142,16 @@ class Isph {
   long long ppe_solves() const { return ppe_solves_; }
   double ppe_seconds() const { return ppe_seconds_; }
   long long escaped() const { return escaped_; }  // particles put back inside the tank (safety net)
+  bool has_body() const { return body_; }
+  Index body_begin() const { return body_begin_; }  // the body's points are wall points [body_begin, end)
+  const MassProperties& body_properties() const { return props_; }
+  // The rigid body's state (2D): centre of the disk, angle, velocities, the fluid force and moment of the
+  // last step (eqs. (36)-(37)), and the acceleration used by the next step's Neumann condition (25).
+  struct BodyState {
+    double centre[2] = {0, 0}, theta = 0, v[2] = {0, 0}, omega = 0, a[2] = {0, 0}, alpha = 0, force[2] = {0, 0},
+           moment = 0;
+  };
+  const BodyState& body() const { return body_state_; }
 
   models::Health health() const {
     models::Health h = models::particle_health<T, D>(f_.p);
@@ -147,10 +165,13 @@ class Isph {
   void save(models::Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
     a.put(prefix + "step", step_);
+    a.put(prefix + "body", body_state_);
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
     step_ = a.get<std::int64_t>(prefix + "step");
+    body_state_ = a.get<BodyState>(prefix + "body");
+    if (body_) place_body_points();
   }
 
   // Host copies for output and tests: positions (n x D), velocities, pressure, density, surface flags.
@@ -202,6 +223,70 @@ class Isph {
         "polymech::sph::predict", range(f.size()),
         KOKKOS_LAMBDA(const Index i) { store<D>(f.vstar, i, polymech::load<D>(f.p.v, i) + c.dt * c.g); });
   }
+  // Moves the body's points rigidly: x = c + Rot(theta) r0, the ghost mirrored through the circle
+  // (q = c + R (x - c)/|x - c|, ghost = 2q - x, n = -(x - c)/|x - c|, d = 2 (R - |x - c|)), the wall
+  // velocity v + omega x r and acceleration a + alpha x r - omega^2 r (eq. (25)).
+  static void place_body(const sph::WallPoints<T, D>& wp, const VecView<T, D>& offset, Index begin, T R, const T* st) {
+    const T cx = st[0], cy = st[1], th = st[2], vx = st[3], vy = st[4], om = st[5], ax = st[6], ay = st[7], al = st[8];
+    const T cs = kx::cos(th), sn = kx::sin(th);
+    Kokkos::parallel_for(
+        "polymech::sph::place_body", range(static_cast<Index>(offset.extent(0))), KOKKOS_LAMBDA(const Index k) {
+          const Index w = begin + k;
+          const T rx = cs * offset(k, 0) - sn * offset(k, 1), ry = sn * offset(k, 0) + cs * offset(k, 1);
+          const T r = kx::sqrt(rx * rx + ry * ry);
+          const T ex = rx / r, ey = ry / r;
+          wp.x(w, 0) = cx + rx;
+          wp.x(w, 1) = cy + ry;
+          const T qx = cx + R * ex, qy = cy + R * ey;
+          wp.ghost(w, 0) = T(2) * qx - (cx + rx);
+          wp.ghost(w, 1) = T(2) * qy - (cy + ry);
+          wp.normal(w, 0) = -ex;
+          wp.normal(w, 1) = -ey;
+          wp.dist(w) = T(2) * (R - r);
+          wp.velocity(w, 0) = vx - om * ry;
+          wp.velocity(w, 1) = vy + om * rx;
+          wp.accel(w, 0) = ax - al * ry - om * om * rx;
+          wp.accel(w, 1) = ay + al * rx - om * om * ry;
+        });
+  }
+  // The fluid force and moment on the body, eqs. (36)-(37) with (42)-(43): minus the wall force of each
+  // (particle, body point) pair, summed. out = {Fx, Fy, M about the centre (cx, cy)}.
+  static void body_force(const neighbors::NeighborList& list, const sph::Fluid<T, D>& f, const sph::WallPoints<T, D>& wp,
+                         const sph::Params<T, D>& c, Index begin, T cx, T cy, double* out) {
+    double fx = 0, fy = 0, mz = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::body_force", range(list.num_particles),
+        KOKKOS_LAMBDA(const Index i, double& ax, double& ay, double& am) {
+          for (Offset k = list.begin(i); k < list.end(i); ++k) {
+            const Index w = list.neighbor(k);
+            if (w < begin) continue;
+            const Vec<T, D> fw = sph::wall_pair_force<T, D>(f, wp, c, i, w);
+            const double gx = -double(fw[0]), gy = -double(fw[1]);  // eq. (42)
+            ax += gx;
+            ay += gy;
+            am += (double(wp.x(w, 0)) - double(cx)) * gy - (double(wp.x(w, 1)) - double(cy)) * gx;  // eq. (37)
+          }
+        },
+        fx, fy, mz);
+    out[0] = fx;
+    out[1] = fy;
+    out[2] = mz;
+  }
+  static long long push_out_of_body(const sph::Fluid<T, D>& f, T cx, T cy, T rmin) {
+    long long n = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::push_out_of_body", range(f.size()),
+        KOKKOS_LAMBDA(const Index i, long long& count) {
+          const Vec<T, D> x = f.p.position(i);
+          const T dx = x[0] - cx, dy = x[1] - cy, r = kx::sqrt(dx * dx + dy * dy);
+          if (r >= rmin || r <= T(0)) return;
+          f.p.u(i, 0) += (rmin - r) * dx / r;
+          f.p.u(i, 1) += (rmin - r) * dy / r;
+          ++count;
+        },
+        n);
+    return n;
+  }
   static long long keep_inside(const sph::Fluid<T, D>& f, const Vec<T, D>& lo, const Vec<T, D>& hi) {
     long long n = 0;
     Kokkos::parallel_reduce(
@@ -248,6 +333,59 @@ class Isph {
     ++ppe_solves_;
     ppe_seconds_ += r.seconds;
   }
+  void place_body_points() {
+    if constexpr (D == 2) {
+      const auto& b = body_state_;
+      const T st[9] = {T(b.centre[0]), T(b.centre[1]), T(b.theta), T(b.v[0]), T(b.v[1]), T(b.omega), T(b.a[0]),
+                       T(b.a[1]), T(b.alpha)};
+      place_body(wp_, body_offset_, body_begin_, T(0.5 * cfg_.body.diameter), st);
+    }
+  }
+  // Conventional serial staggered coupling (CSS), explicit Euler as the paper: the fluid step just taken
+  // saw the body at its old pose; the body now moves with the fluid force of that step, eqs. (31)-(32),
+  // and the next fluid step sees the new pose. A body that reaches a tank wall stops there (a kinematic
+  // contact, standing in for the shared contact module).
+  void advance_body() {
+    if constexpr (D == 2) {
+      auto& b = body_state_;
+      double out[3];
+      body_force(fw_, f_, wp_, par_, body_begin_, T(b.centre[0]), T(b.centre[1]), out);
+      b.force[0] = out[0];
+      b.force[1] = out[1];
+      b.moment = out[2];
+      const double dt = cfg_.dt, m = props_.mass, R = 0.5 * cfg_.body.diameter;
+      if (time() + dt < cfg_.body.release_time) return;  // held fixed: the force is recorded only
+      const double v0[2] = {b.v[0], b.v[1]}, w0 = b.omega;
+      // eq. (31) by explicit Euler, with an added-mass term: the fluid force of a body accelerating at a
+      // contains -m_a a (m_a = C_a rho0 pi R^2 for a cylinder); explicit staggered coupling then updates
+      // a_{n+1} = (F_rest - m_a a_n) / m, which diverges when m_a >= m (density ratio <= 1 at C_a = 1).
+      // Moving m_a a to the left, (m + m_a) a_{n+1} = F + m_a a_n - m g, has the same fixed point and is
+      // stable (not in the paper; added_mass = 0 gives the paper's plain CSS).
+      const double pi = 3.14159265358979323846;
+      const double ma = cfg_.body.added_mass * cfg_.density * pi * R * R;
+      b.v[0] += dt * (out[0] + ma * b.a[0]) / (m + ma);
+      b.v[1] += dt * (out[1] + ma * b.a[1] - m * cfg_.gravity) / (m + ma);
+      b.omega += dt * out[2] / props_.inertia;          // eq. (32)
+      b.centre[0] += dt * b.v[0];
+      b.centre[1] += dt * b.v[1];
+      b.theta += dt * b.omega;
+      const double lo[2] = {R, R}, hi[2] = {cfg_.tank[0] - R, 1e300};
+      for (int k = 0; k < 2; ++k) {
+        if (b.centre[k] < lo[k]) {
+          b.centre[k] = lo[k];
+          if (b.v[k] < 0) b.v[k] = 0;
+        } else if (b.centre[k] > hi[k]) {
+          b.centre[k] = hi[k];
+          if (b.v[k] > 0) b.v[k] = 0;
+        }
+      }
+      b.a[0] = (b.v[0] - v0[0]) / dt;
+      b.a[1] = (b.v[1] - v0[1]) / dt;
+      b.alpha = (b.omega - w0) / dt;
+      place_body_points();
+      escaped_ += push_out_of_body(f_, T(b.centre[0]), T(b.centre[1]), T(R + 0.25 * cfg_.spacing));
+    }
+  }
   void keep_inside() {
     Vec<T, D> lo, hi;
     const T margin = T(0.25 * cfg_.spacing);
@@ -276,9 +414,8 @@ class Isph {
   static long long cells(double length, double l0) { return static_cast<long long>(std::llround(length / l0)); }
 
   void build_fluid() {
-    const double l0 = cfg_.spacing;
-    long long n[3] = {cells(cfg_.fluid[0], l0), cells(cfg_.fluid[1], l0), D == 3 ? cells(cfg_.fluid[2], l0) : 1};
-    const Index total = static_cast<Index>(n[0] * n[1] * n[2]);
+    const std::vector<double> pts = fluid_positions(cfg_);
+    const Index total = static_cast<Index>(pts.size() / D);
     particles::allocate(f_.p, total, "polymech::isph::");
     const auto size = static_cast<std::size_t>(total);
     f_.x = VecView<T, D>("polymech::isph::x", size);
@@ -292,14 +429,8 @@ class Isph {
     f_.surface = sph::Flags("polymech::isph::surface", size);
     diag_ = View1<T>("polymech::isph::diag", size);
     auto h = Kokkos::create_mirror_view(f_.p.x0);
-    Index i = 0;
-    for (long long c = 0; c < n[2]; ++c)
-      for (long long b = 0; b < n[1]; ++b)
-        for (long long a = 0; a < n[0]; ++a, ++i) {
-          h(i, 0) = T((a + 0.5) * l0);
-          h(i, 1) = T((b + 0.5) * l0);
-          if constexpr (D == 3) h(i, 2) = T((c + 0.5) * l0);
-        }
+    for (std::size_t i = 0; i < size; ++i)
+      for (int d = 0; d < D; ++d) h(i, d) = T(pts[i * D + d]);
     Kokkos::deep_copy(f_.p.x0, h);
   }
 
@@ -322,7 +453,16 @@ class Isph {
           pts.push_back((b + 0.5) * l0);
           if (D == 3) pts.push_back((c + 0.5) * l0);
         }
-    const std::size_t m = pts.size() / D;
+    const std::size_t tank_points = pts.size() / D;
+    BodyCells cells_b;
+    if constexpr (D == 2) {
+      if (body_) {
+        cells_b = body_cells(cfg_);
+        props_ = mass_properties(cfg_, cells_b);
+      }
+    }
+    const std::size_t m = tank_points + cells_b.weight.size();
+    body_begin_ = static_cast<Index>(tank_points);
     const std::string pre = "polymech::isph::wall_";
     wp_.x = VecView<T, D>(pre + "x", m);
     wp_.vol = View1<T>(pre + "vol", m);
@@ -339,7 +479,7 @@ class Isph {
     auto hn = Kokkos::create_mirror_view(wp_.normal);
     auto hg = Kokkos::create_mirror_view(wp_.ghost);
     auto hd = Kokkos::create_mirror_view(wp_.dist);
-    for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t k = 0; k < tank_points; ++k) {
       double q[3], r2 = 0.0;
       for (int d = 0; d < D; ++d) {
         const double x = pts[k * D + d];
@@ -356,6 +496,13 @@ class Isph {
       hv(k) = T(std::pow(l0, D));
       hd(k) = T(2 * r);
     }
+    body_offset_ = VecView<T, D>("polymech::isph::body_offset", cells_b.weight.size());
+    auto ho = Kokkos::create_mirror_view(body_offset_);
+    for (std::size_t k = 0; k < cells_b.weight.size(); ++k) {
+      for (int d = 0; d < D; ++d) ho(k, d) = T(cells_b.offset[2 * k + d]);
+      hv(tank_points + k) = T(cells_b.weight[k]);
+    }
+    Kokkos::deep_copy(body_offset_, ho);
     Kokkos::deep_copy(wp_.x, hx);
     Kokkos::deep_copy(wp_.vol, hv);
     Kokkos::deep_copy(wp_.normal, hn);
@@ -364,7 +511,11 @@ class Isph {
   }
 
   Config cfg_;
-  bool viscosity_ = false, stabilization_ = false;
+  bool viscosity_ = false, stabilization_ = false, body_ = false;
+  Index body_begin_ = 0;
+  VecView<T, D> body_offset_;
+  MassProperties props_;
+  BodyState body_state_;
   sph::Params<T, D> par_;
   sph::Fluid<T, D> f_;
   sph::WallPoints<T, D> wp_;

@@ -75,7 +75,7 @@ TEST(IsphScenes, BadValuesAreRefused) {
                {"tank.water_width", "dam break"});
   expect_error(replace_once(kBase, "spacing = 0.01", "spacing = 1e300"), "spacing = 1e300", {"fluid.spacing"});
   expect_error(replace_once(kBase, "effects = [\"viscosity\", \"stabilization\"]", "effects = [\"rigid_body\"]"),
-               "effects = [\"rigid_body\"]", {"rigid_body", "not implemented"});
+               "effects = [\"rigid_body\"]", {"rigid_body", "[body]"});
   expect_error(replace_once(kBase, "case = \"dam_break\"", "case = \"sloshing\""), "case = \"sloshing\"",
                {"tank.case", "hydrostatic"});
 }
