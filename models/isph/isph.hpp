@@ -496,13 +496,15 @@ class Isph {
       hv(k) = T(std::pow(l0, D));
       hd(k) = T(2 * r);
     }
-    body_offset_ = VecView<T, D>("polymech::isph::body_offset", cells_b.weight.size());
-    auto ho = Kokkos::create_mirror_view(body_offset_);
-    for (std::size_t k = 0; k < cells_b.weight.size(); ++k) {
-      for (int d = 0; d < D; ++d) ho(k, d) = T(cells_b.offset[2 * k + d]);
-      hv(tank_points + k) = T(cells_b.weight[k]);
+    if (!cells_b.weight.empty()) {  // effect `rigid_body` only: nothing allocated without it
+      body_offset_ = VecView<T, D>("polymech::isph::body_offset", cells_b.weight.size());
+      auto ho = Kokkos::create_mirror_view(body_offset_);
+      for (std::size_t k = 0; k < cells_b.weight.size(); ++k) {
+        for (int d = 0; d < D; ++d) ho(k, d) = T(cells_b.offset[2 * k + d]);
+        hv(tank_points + k) = T(cells_b.weight[k]);
+      }
+      Kokkos::deep_copy(body_offset_, ho);
     }
-    Kokkos::deep_copy(body_offset_, ho);
     Kokkos::deep_copy(wp_.x, hx);
     Kokkos::deep_copy(wp_.vol, hv);
     Kokkos::deep_copy(wp_.normal, hn);
