@@ -14,8 +14,9 @@
 //   -> ghost velocities of u*, PPE source (4) with div u* (12), (22) [+ stabilization alpha term]
 //   -> BiCGSTAB on the matrix-free PPE (10), (20) with Neumann wall pressure (25)-(26), warm start
 //   -> wall pressures, projection (5) with grad p (9), (19) -> x^{n+1} = x^n + dt u^{n+1}.
-// The walls here are the tank of an axis-aligned box (sides and bottom, open top); the general cell mesh
-// of IGCB (curved walls, the rigid body) is not implemented yet (docs/METHODS.md).
+//   -> [rigid_body] force and moment from the reactions at the body's points, Euler update (CSS).
+// Walls: the tank of an axis-aligned box (sides and bottom, open top) and, with `rigid_body`, a 2D
+// cylinder of polar cells; a general cell mesh of IGCB (arbitrary walls) is not built (docs/METHODS.md).
 #pragma once
 
 #include <array>
