@@ -4,6 +4,7 @@
 #include "io/dem_scene.hpp"
 #include "io/efg_scene.hpp"
 #include "io/helmholtz_scene.hpp"
+#include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
 
@@ -47,6 +48,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_efg_scene(f); },
        [](const std::filesystem::path&) { return std::string("efg"); },
        [](const std::filesystem::path& f) { return load_efg_scene(f).cost; }},
+      {"isph", "stabilized ISPH with IGCB walls: hydrostatic tank, dam break (seed 002 paper 4)", {"isph"},
+       [](const std::filesystem::path& f) { load_isph_scene(f); },
+       [](const std::filesystem::path&) { return std::string("isph"); },
+       [](const std::filesystem::path& f) { return load_isph_scene(f).cost; }},
   };
   return kinds;
 }

@@ -1,0 +1,133 @@
+#include "io/isph_scene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "io/ranges.hpp"
+
+namespace polymech::io {
+
+namespace pl = polymech::io::plausible;
+
+// Rates: docs/PERFORMANCE.md, section "ISPH (stage 1)", 1 thread: a step costs about one
+// particle-PPE-iteration per particle and BiCGSTAB iteration at 8.7e5 /s (the dam break at 3200
+// particles: 99 iterations per step, 95 % of the step in the PPE); iterations ~ 1.75 sqrt(N) in 2D and
+// ~ 1.4 N^(1/3) in 3D (measured at 200 to 3200 particles). Memory: ~40 reals per particle and wall
+// point plus the three neighbour lists (~35 pairs per particle in 2D, ~150 in 3D, one int each).
+CostEstimate isph_cost(double particles, double wall_points, int dim, double steps) {
+  CostEstimate c;
+  c.method = "stabilized ISPH (IGCB walls)";
+  c.item_name = "particles";
+  c.items = particles;
+  c.max_items = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+  const double pairs_per = dim == 2 ? 35.0 : 150.0;
+  c.pairs = particles * pairs_per;
+  c.steps = steps;
+  c.step_name = "steps";
+  c.bytes = 64e6 + (particles + wall_points) * 40.0 * 8.0 + 3.0 * (particles + wall_points) * pairs_per * 4.0;
+  const double iterations = dim == 2 ? 1.75 * std::sqrt(particles) : 1.4 * std::cbrt(particles);
+  const double rate = dim == 2 ? 8.7e5 : 8.7e5 * 35.0 / 150.0;  // particle-iterations/s
+  c.seconds = steps * particles * std::max(iterations, 5.0) / rate;
+  c.rate = "8.7e5 particle-PPE-iterations/s in 2D (scaled by the pair count in 3D), about 1.75 sqrt(N) BiCGSTAB "
+           "iterations per step, docs/PERFORMANCE.md 'ISPH (stage 1)', 1 thread";
+  return c;
+}
+
+IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& precision,
+                          const std::string& accuracy) {
+  IsphScene out;
+  const OpenScene s = open_scene(file, "isph", isph::effect_table(), precision, out);
+  const SceneTable& root = s.root;
+  auto& c = out.config;
+  c.dim = static_cast<int>(s.model.integer("dimension", 2, 2, 3));
+  c.wall = s.model.choice("wall", {"no_slip", "slip"}, "no_slip") == "slip" ? isph::WallCondition::slip
+                                                                            : isph::WallCondition::no_slip;
+  if (c.effects.has("rigid_body") && c.dim != 2) s.model.fail("effects", "lists \"rigid_body\": the body is 2D only");
+  s.model.finish();
+  out.header.set_accuracy(read_accuracy(root, accuracy, 0.0, "paper"));
+  const double f = out.header.coarsening;
+
+  const SceneTable fluid = root.table("fluid");
+  c.density = fluid.real("density", pl::density());
+  c.viscosity = fluid.real("viscosity", 1e-6, Range{1e-9, 10.0, false, false, "m^2/s (kinematic viscosity)"});
+  c.gravity = fluid.real("gravity", 9.8, Range{0.0, 1e3, false, false, "m/s^2 (along -y)"});
+  c.spacing = f * fluid.real("spacing", pl::spacing());
+  c.radius_factor = fluid.real("radius_factor", 3.3, Range{2.0, 5.0, false, false, "re / l0"});
+  c.alpha = fluid.real("alpha", 5e-3, Range{0.0, 1.0, false, false, "density relaxation of eq. (4)"});
+  c.surface_threshold =
+      fluid.real("surface_threshold", 0.95, Range{0.5, 0.999, false, false, "free surface where rho < this x rho0"});
+  c.surface_correction = fluid.boolean("surface_correction", true);
+  c.tolerance = fluid.real("ppe_tolerance", 1e-8, Range{1e-14, 1e-2, false, false, "relative residual"});
+  c.max_iterations = static_cast<int>(fluid.integer("ppe_max_iterations", 2000, 1, 1000000));
+  fluid.finish();
+
+  const SceneTable tank = root.table("tank");
+  out.case_name = tank.choice("case", {"hydrostatic", "dam_break"});
+  c.tank[0] = tank.real("width", pl::length());
+  c.tank[1] = tank.real("height", pl::length());
+  c.fluid[0] = tank.real("water_width", pl::length());
+  c.fluid[1] = tank.real("water_height", pl::length());
+  if (c.dim == 3) {
+    c.tank[2] = tank.real("depth", pl::length());
+    c.fluid[2] = tank.real("water_depth", pl::length());
+  }
+  for (int k = 0; k < c.dim; ++k) {
+    const char* key = k == 0 ? "water_width" : k == 1 ? "water_height" : "water_depth";
+    if (c.fluid[k] > c.tank[k]) tank.fail(key, "is larger than the tank (" + format_number(c.tank[k]) + " m)");
+    if (c.fluid[k] < 2 * c.spacing)
+      tank.fail(key, "= " + format_number(c.fluid[k]) + " m holds fewer than 2 particles at the spacing " +
+                         format_number(c.spacing) + " m");
+  }
+  if (out.case_name == "dam_break" && c.fluid[0] >= c.tank[0])
+    tank.fail("water_width", "fills the tank: a dam break needs room for the surge");
+  tank.finish();
+
+  if (const auto body = root.optional_table("body")) {
+    if (!c.effects.has("rigid_body")) body->fail_table("needs the effect \"rigid_body\" in model.effects");
+    c.body.diameter = body->real("diameter", pl::length());
+    c.body.centre[0] = body->real("x", pl::coordinate());
+    c.body.centre[1] = body->real("y", pl::coordinate());
+    c.body.density_ratio = body->real("density_ratio", Range{0.05, 20.0, false, false, "rho_body / rho_water"});
+    const double R = 0.5 * c.body.diameter;
+    if (c.body.diameter <= 2 * c.spacing) body->fail("diameter", "must be more than 2 particle spacings");
+    if (c.body.centre[0] - R < 0 || c.body.centre[0] + R > c.tank[0]) body->fail("x", "puts the body outside the tank");
+    if (c.body.centre[1] - R < 0 || c.body.centre[1] + R > c.tank[1]) body->fail("y", "puts the body outside the tank");
+    c.body.added_mass = body->real("added_mass", 1.0, Range{0.0, 10.0, false, false, "C_a (0: plain CSS as the paper)"});
+    c.body.release_time = body->real("release_time", 0.0, Range{0.0, 1e6, false, false, "s (held fixed until then)"});
+    out.draft_average_last = body->real("draft_average_last", 0.0, Range{0.0, 1e6, false, false, "s"});
+    body->finish();
+  } else if (c.effects.has("rigid_body")) {
+    s.model.fail("effects", "lists \"rigid_body\" but the scene has no [body] table");
+  }
+
+  const SceneTable time = root.table("time");
+  c.dt = f * time.real("dt", pl::time_step());
+  out.end_time = time.real("end_time", pl::duration());
+  out.snapshot_every = time.real("snapshot_every", 0.0, Range{0.0, 1e6, false, false, "s (0: no snapshots)"});
+  out.sample_every = time.real("sample_every", 0.0, Range{0.0, 1e6, false, false, "s (0: every step)"});
+  out.average_last = time.real("average_last", 0.0, Range{0.0, 1e6, false, false, "s"});
+  time.finish();
+  root.finish();
+
+  out.limit = isph::time_step_limit(c);
+  if (c.dt > out.limit.limit)
+    time.fail("dt", "gives dt = " + format_number(c.dt) + " s, above the limit " + out.limit.describe());
+  const double steps = std::ceil(out.end_time / c.dt - 1e-9);
+  if (!(steps <= 1e12)) time.fail("end_time", "needs more than 1e12 steps");
+  out.steps = static_cast<std::int64_t>(steps);
+  if (out.average_last > out.end_time) time.fail("average_last", "is longer than end_time");
+
+  const auto n = isph::count(c);
+  out.cost = isph_cost(double(n.fluid), double(n.wall_points), c.dim, steps);
+  out.cost.size_keys = {"fluid.spacing = " + format_number(c.spacing) + " m (after the accuracy preset)",
+                        "tank.water_width, water_height = " + format_number(c.fluid[0]) + ", " +
+                            format_number(c.fluid[1]) + " m",
+                        "time.end_time / time.dt = " + format_number(steps) + " steps"};
+  check_size(out.cost, s.model);
+  const std::string why = isph::check(c);
+  if (!why.empty()) s.model.fail("kind", why);
+  return out;
+}
+
+}  // namespace polymech::io

@@ -1,0 +1,48 @@
+// Configuration of the stabilized ISPH model (seed 002 paper 4) as plain data (Kokkos-free): filled by
+// io/isph_scene.cpp or directly by tests.
+#pragma once
+
+#include <string>
+
+#include "effects.hpp"
+
+namespace polymech::isph {
+
+enum class WallCondition { no_slip, slip };  // eqs. (29)-(30) / (27)-(28)
+
+// A floating circular cylinder (2D) of IGCB cells (effect `rigid_body`, eqs. (31)-(43)).
+struct Body {
+  double centre[2] = {0.0, 0.0};  // initial centre [m]
+  double diameter = 0.0;          // [m] (0: no body)
+  double density_ratio = 0.8;     // rho_r / rho0
+  double added_mass = 1.0;         // C_a: the coupling treats C_a rho0 pi R^2 implicitly (0: the paper's plain CSS)
+  double release_time = 0.0;      // [s] held fixed (force still computed) until then: the pressure of the
+                                  // water started from rest needs a few hundred steps to become hydrostatic
+};
+
+struct Config {
+  int dim = 2;                      // 2 (the paper's cases) or 3 (the hydrostatic tank)
+  double spacing = 5e-3;            // l0 [m] (Table 1)
+  double radius_factor = 3.3;       // re / l0 (Table 1)
+  double density = 1000.0;          // rho^0 [kg/m^3]
+  double viscosity = 1e-6;          // nu [m^2/s] (Table 1 prints 1e-3, 1000x water: a scene option)
+  double gravity = 9.8;             // along -y [m/s^2]
+  double alpha = 5e-3;              // density relaxation, eq. (4) (used when `stabilization` is on)
+  double dt = 5e-4;                 // [s]
+  double surface_threshold = 0.9;   // beta: free surface where rho_i < beta rho^0
+  double tank[3] = {0.2, 0.2, 0.2};   // inner size of the tank: x, y (height), z (3D); walls below and on the sides
+  double fluid[3] = {0.2, 0.1, 0.2};  // the initial water block, from the tank's lower corner (x = 0, y = 0)
+  bool surface_correction = true;   // renormalised eq. (9) at free-surface particles (false: as printed)
+  WallCondition wall = WallCondition::no_slip;
+  Body body;                        // used with the effect `rigid_body`
+  double tolerance = 1e-8;          // PPE: relative residual
+  int max_iterations = 2000;        // PPE: BiCGSTAB iterations per step
+  EffectSet effects;
+};
+
+// Counts of a configuration (host, no allocation): fluid particles and wall integration points.
+struct Counts {
+  long long fluid = 0, wall_points = 0;
+};
+
+}  // namespace polymech::isph

@@ -1,0 +1,538 @@
+// Stabilized incompressible SPH (seed 002 paper 4; Asai et al. 2012) with improved ghost cell boundary
+// (IGCB) walls: tank walls as square (cubic) cells of the particle spacing, one Gauss point each (the
+// paper's choice), ghost points mirrored into the fluid.
+//
+//   polymech::isph::Config c;                 // or io::load_isph_scene(...)
+//   c.effects = EffectSet::resolve({"viscosity", "stabilization"}, isph::effect_table());
+//   isph::Isph<double, 2> model(c);
+//   models::run(model, steps);
+//
+// One step (the fractional step of eqs. (3)-(5)):
+//   x = x0 + u; neighbour lists (fluid-fluid, fluid -> wall points, ghosts -> fluid)
+//   -> density eqs. (13) + (18) and the free surface (rho_i < beta rho0: p = 0)
+//   -> [viscosity] ghost velocities (23), (27)-(30), u* = u + dt (nu lap u + g) (3), (11), (21)
+//   -> ghost velocities of u*, PPE source (4) with div u* (12), (22) [+ stabilization alpha term]
+//   -> BiCGSTAB on the matrix-free PPE (10), (20) with Neumann wall pressure (25)-(26), warm start
+//   -> wall pressures, projection (5) with grad p (9), (19) -> x^{n+1} = x^n + dt u^{n+1}.
+//   -> [rigid_body] force and moment from the reactions at the body's points, Euler update (CSS).
+// Walls: the tank of an axis-aligned box (sides and bottom, open top) and, with `rigid_body`, a 2D
+// cylinder of polar cells; a general cell mesh of IGCB (arbitrary walls) is not built (docs/METHODS.md).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/archive.hpp"
+#include "common/particle_health.hpp"
+#include "common/run.hpp"
+#include "common/state.hpp"
+#include "isph/config.hpp"
+#include "isph/effect_table.hpp"
+#include "isph/setup.hpp"
+#include "neighbors/neighbor_search.hpp"
+#include "particles/reductions.hpp"
+#include "sph/bicgstab.hpp"
+#include "sph/operators.hpp"
+
+namespace polymech::isph {
+
+// The PPE operator y = D^-1 A x as a Krylov operator (kernels/sph/bicgstab.hpp concept).
+template <class T, int D>
+struct PressureOperator {
+  sph::Fluid<T, D> f;
+  sph::WallPoints<T, D> wp;
+  sph::Params<T, D> c;
+  const neighbors::NeighborList* ff = nullptr;
+  const neighbors::NeighborList* fw = nullptr;
+  const neighbors::NeighborList* gf = nullptr;
+  Index local_size() const { return f.size(); }
+  Index owned_size() const { return f.size(); }
+  void apply(const View1<T>& x, const View1<T>& y) const {
+    neighbors::for_each_row("polymech::sph::ghost_pressure", *gf, sph::GhostPressure<T, D>{f, wp, c, x, false});
+    neighbors::for_each_row("polymech::sph::laplacian_fluid", *ff, sph::FluidLaplacian<T, D>{f, c, x});
+    neighbors::for_each_row("polymech::sph::laplacian_wall", *fw, sph::WallLaplacian<T, D>{f, wp, c, x, y});
+  }
+};
+
+struct PpeRecord {
+  int iterations = 0;
+  double residual = 0.0;
+  std::vector<double> history;  // of the last solve
+};
+
+template <class T = double, int D = 2>
+class Isph {
+ public:
+  static constexpr int dimension = D;
+  static const std::vector<EffectSpec>& effects() { return effect_table(); }
+
+  explicit Isph(const Config& c) : cfg_(c) {
+    const std::string why = check(c);
+    if (!why.empty()) throw std::invalid_argument("isph: " + why);
+    if (c.dim != D) throw std::invalid_argument("isph: the configuration is " + std::to_string(c.dim) + "D, the model " +
+                                                std::to_string(D) + "D");
+    viscosity_ = c.effects.has("viscosity");
+    stabilization_ = c.effects.has("stabilization");
+    body_ = D == 2 && c.effects.has("rigid_body") && c.body.diameter > 0;
+    const double l0 = c.spacing, re = c.radius_factor * l0;
+    const double scale = sph::lattice_sum<D>(re, l0);
+    par_.w = sph::Wendland<T, D>::make(re, scale);
+    par_.mass = T(c.density * std::pow(l0, D));
+    par_.rho0 = T(c.density);
+    par_.nu = viscosity_ ? T(c.viscosity) : T(0);
+    par_.dt = T(c.dt);
+    par_.alpha = stabilization_ ? T(c.alpha) : T(0);
+    par_.beta = T(c.surface_threshold);
+    par_.g = Vec<T, D>::zero();
+    par_.g[1] = T(-c.gravity);
+    par_.slip = c.wall == WallCondition::slip;
+    par_.surface_correction = c.surface_correction;
+    build_fluid();
+    build_walls();
+    if (body_) {
+      body_state_.centre[0] = c.body.centre[0];
+      body_state_.centre[1] = c.body.centre[1];
+      place_body_points();
+    }
+    opts_.tolerance = c.tolerance;
+    opts_.max_iterations = c.max_iterations;
+    state_.add("u", f_.p.u);
+    state_.add("v", f_.p.v);
+    state_.add("pressure", f_.pressure);
+  }
+
+  void prepare() {}
+  void step() {
+    sph::current_positions(f_);
+    search_ff_.build(f_.x, par_.w.re, neighbors::ListKind::full, ff_);
+    search_fw_.build_between(f_.x, wp_.x, par_.w.re, fw_);
+    search_gf_.build_between(wp_.ghost, f_.x, par_.w.re, gf_);
+    neighbors::for_each_row("polymech::sph::density_fluid", ff_, sph::FluidDensity<T, D>{f_, par_});
+    neighbors::for_each_row("polymech::sph::density_wall", fw_, sph::WallDensity<T, D>{f_, wp_, par_});
+    predict();
+    neighbors::for_each_row("polymech::sph::ghost_velocity", gf_, sph::GhostVelocity<T, D>{f_, wp_, par_, f_.vstar});
+    neighbors::for_each_row("polymech::sph::divergence_fluid", ff_, sph::FluidDivergence<T, D>{f_, par_});
+    neighbors::for_each_row("polymech::sph::diagonal_fluid", ff_, sph::FluidDiagonal<T, D>{f_, par_, diag_});
+    neighbors::for_each_row("polymech::sph::ppe_rhs", fw_, sph::WallDivergenceRhs<T, D>{f_, wp_, par_, diag_});
+    solve_pressure();
+    neighbors::for_each_row("polymech::sph::ghost_pressure", gf_,
+                            sph::GhostPressure<T, D>{f_, wp_, par_, f_.pressure, true});
+    neighbors::for_each_row("polymech::sph::pressure_gradient", ff_, sph::FluidPressureGradient<T, D>{f_, par_});
+    neighbors::for_each_row("polymech::sph::project", fw_, sph::WallPressureCorrect<T, D>{f_, wp_, par_});
+    keep_inside();
+    if (body_) advance_body();
+    ++step_;
+  }
+
+  double dt() const { return cfg_.dt; }
+  double time() const { return static_cast<double>(step_) * cfg_.dt; }
+  std::int64_t step_index() const { return step_; }
+  void set_step_index(std::int64_t s) { step_ = s; }
+  const Config& config() const { return cfg_; }
+  Index particles() const { return f_.size(); }
+  Index wall_points() const { return wp_.size(); }
+  const sph::Fluid<T, D>& fluid() const { return f_; }
+  const sph::WallPoints<T, D>& walls() const { return wp_; }
+  const sph::Params<T, D>& params() const { return par_; }
+  const PpeRecord& last_solve() const { return last_; }
+  long long ppe_iterations_total() const { return ppe_total_; }
+  long long ppe_solves() const { return ppe_solves_; }
+  double ppe_seconds() const { return ppe_seconds_; }
+  long long escaped() const { return escaped_; }  // particles put back inside the tank (safety net)
+  bool has_body() const { return body_; }
+  Index body_begin() const { return body_begin_; }  // the body's points are wall points [body_begin, end)
+  const MassProperties& body_properties() const { return props_; }
+  // The rigid body's state (2D): centre of the disk, angle, velocities, the fluid force and moment of the
+  // last step (eqs. (36)-(37)), and the acceleration used by the next step's Neumann condition (25).
+  struct BodyState {
+    double centre[2] = {0, 0}, theta = 0, v[2] = {0, 0}, omega = 0, a[2] = {0, 0}, alpha = 0, force[2] = {0, 0},
+           moment = 0;
+  };
+  const BodyState& body() const { return body_state_; }
+
+  models::Health health() const {
+    models::Health h = models::particle_health<T, D>(f_.p);
+    if (h.finite && !last_ok_) {
+      h.finite = false;
+      h.problem = "the pressure Poisson solve failed: " + last_reason_;
+    }
+    return h;
+  }
+  const models::StateRegistry& state() const { return state_; }
+  void save(models::Archive& a, const std::string& prefix) const {
+    state_.save(a, prefix + "state/");
+    a.put(prefix + "step", step_);
+    a.put(prefix + "body", body_state_);
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    state_.load(a, prefix + "state/");
+    step_ = a.get<std::int64_t>(prefix + "step");
+    body_state_ = a.get<BodyState>(prefix + "body");
+    if (body_) place_body_points();
+  }
+
+  // Host copies for output and tests: positions (n x D), velocities, pressure, density, surface flags.
+  std::vector<double> host_positions() const { return host_vec(f_.x, true); }
+  std::vector<double> host_velocities() const { return host_vec(f_.p.v, false); }
+  std::vector<double> host_pressure() const { return host_scalar(f_.pressure); }
+  std::vector<double> host_density() const { return host_scalar(f_.rho); }
+  std::vector<int> host_surface() const {
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), f_.surface);
+    std::vector<int> out(h.extent(0));
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = h(i);
+    return out;
+  }
+  // The wall force on every fluid particle, eq. (38), and its sum; and the sum of the reactions at the
+  // integration points, eqs. (42)-(43), summed over the same pairs (momentum exchange).
+  void wall_forces(std::vector<double>& on_fluid, std::vector<double>& on_points) const {
+    VecView<T, D> out("polymech::isph::wall_force", static_cast<std::size_t>(f_.size()));
+    neighbors::for_each_row("polymech::sph::wall_force", fw_, sph::WallForceOnFluid<T, D>{f_, wp_, par_, out});
+    on_fluid = host_vec(out, false);
+    on_points.assign(static_cast<std::size_t>(wp_.size()) * D, 0.0);
+    auto off = Kokkos::create_mirror_view_and_copy(HostSpace(), fw_.offsets);
+    auto nb = Kokkos::create_mirror_view_and_copy(HostSpace(), fw_.neighbors);
+    // the reaction of each pair, eq. (42), from the same device function, copied per pair
+    View2<T> pf("polymech::isph::pair_force", static_cast<std::size_t>(fw_.num_pairs), D);
+    const auto f = f_;
+    const auto wp = wp_;
+    const auto c = par_;
+    const auto list = fw_;
+    pair_forces(list, f, wp, c, pf);
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), pf);
+    for (Index i = 0; i < f_.size(); ++i)
+      for (Offset k = off(i); k < off(i + 1); ++k)
+        for (int d = 0; d < D; ++d) on_points[static_cast<std::size_t>(nb(k)) * D + d] -= double(h(k, d));
+  }
+
+  // Public for nvcc (no lambdas in private members).
+  static void pair_forces(const neighbors::NeighborList& list, const sph::Fluid<T, D>& f, const sph::WallPoints<T, D>& wp,
+                          const sph::Params<T, D>& c, const View2<T>& out) {
+    Kokkos::parallel_for(
+        "polymech::sph::wall_pair_forces", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+          for (Offset k = list.begin(i); k < list.end(i); ++k) {
+            const Vec<T, D> fk = sph::wall_pair_force<T, D>(f, wp, c, i, list.neighbor(k));
+            for (int d = 0; d < D; ++d) out(k, d) = fk[d];
+          }
+        });
+  }
+  static void gravity_predict(const sph::Fluid<T, D>& f, const sph::Params<T, D>& c) {
+    Kokkos::parallel_for(
+        "polymech::sph::predict", range(f.size()),
+        KOKKOS_LAMBDA(const Index i) { store<D>(f.vstar, i, polymech::load<D>(f.p.v, i) + c.dt * c.g); });
+  }
+  // Moves the body's points rigidly: x = c + Rot(theta) r0, the ghost mirrored through the circle
+  // (q = c + R (x - c)/|x - c|, ghost = 2q - x, n = -(x - c)/|x - c|, d = 2 (R - |x - c|)), the wall
+  // velocity v + omega x r and acceleration a + alpha x r - omega^2 r (eq. (25)).
+  static void place_body(const sph::WallPoints<T, D>& wp, const VecView<T, D>& offset, Index begin, T R, const T* st) {
+    const T cx = st[0], cy = st[1], th = st[2], vx = st[3], vy = st[4], om = st[5], ax = st[6], ay = st[7], al = st[8];
+    const T cs = kx::cos(th), sn = kx::sin(th);
+    Kokkos::parallel_for(
+        "polymech::sph::place_body", range(static_cast<Index>(offset.extent(0))), KOKKOS_LAMBDA(const Index k) {
+          const Index w = begin + k;
+          const T rx = cs * offset(k, 0) - sn * offset(k, 1), ry = sn * offset(k, 0) + cs * offset(k, 1);
+          const T r = kx::sqrt(rx * rx + ry * ry);
+          const T ex = rx / r, ey = ry / r;
+          wp.x(w, 0) = cx + rx;
+          wp.x(w, 1) = cy + ry;
+          const T qx = cx + R * ex, qy = cy + R * ey;
+          wp.ghost(w, 0) = T(2) * qx - (cx + rx);
+          wp.ghost(w, 1) = T(2) * qy - (cy + ry);
+          wp.normal(w, 0) = -ex;
+          wp.normal(w, 1) = -ey;
+          wp.dist(w) = T(2) * (R - r);
+          wp.velocity(w, 0) = vx - om * ry;
+          wp.velocity(w, 1) = vy + om * rx;
+          wp.accel(w, 0) = ax - al * ry - om * om * rx;
+          wp.accel(w, 1) = ay + al * rx - om * om * ry;
+        });
+  }
+  // The fluid force and moment on the body, eqs. (36)-(37) with (42)-(43): minus the wall force of each
+  // (particle, body point) pair, summed. out = {Fx, Fy, M about the centre (cx, cy)}.
+  static void body_force(const neighbors::NeighborList& list, const sph::Fluid<T, D>& f, const sph::WallPoints<T, D>& wp,
+                         const sph::Params<T, D>& c, Index begin, T cx, T cy, double* out) {
+    double fx = 0, fy = 0, mz = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::body_force", range(list.num_particles),
+        KOKKOS_LAMBDA(const Index i, double& ax, double& ay, double& am) {
+          for (Offset k = list.begin(i); k < list.end(i); ++k) {
+            const Index w = list.neighbor(k);
+            if (w < begin) continue;
+            const Vec<T, D> fw = sph::wall_pair_force<T, D>(f, wp, c, i, w);
+            const double gx = -double(fw[0]), gy = -double(fw[1]);  // eq. (42)
+            ax += gx;
+            ay += gy;
+            am += (double(wp.x(w, 0)) - double(cx)) * gy - (double(wp.x(w, 1)) - double(cy)) * gx;  // eq. (37)
+          }
+        },
+        fx, fy, mz);
+    out[0] = fx;
+    out[1] = fy;
+    out[2] = mz;
+  }
+  static long long push_out_of_body(const sph::Fluid<T, D>& f, T cx, T cy, T rmin) {
+    long long n = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::push_out_of_body", range(f.size()),
+        KOKKOS_LAMBDA(const Index i, long long& count) {
+          const Vec<T, D> x = f.p.position(i);
+          const T dx = x[0] - cx, dy = x[1] - cy, r = kx::sqrt(dx * dx + dy * dy);
+          if (r >= rmin || r <= T(0)) return;
+          f.p.u(i, 0) += (rmin - r) * dx / r;
+          f.p.u(i, 1) += (rmin - r) * dy / r;
+          ++count;
+        },
+        n);
+    return n;
+  }
+  static long long keep_inside(const sph::Fluid<T, D>& f, const Vec<T, D>& lo, const Vec<T, D>& hi) {
+    long long n = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::keep_inside", range(f.size()),
+        KOKKOS_LAMBDA(const Index i, long long& count) {
+          bool moved = false;
+          Vec<T, D> x = f.p.position(i);
+          for (int k = 0; k < D; ++k) {
+            if (x[k] < lo[k]) {
+              f.p.u(i, k) += lo[k] - x[k];
+              if (f.p.v(i, k) < T(0)) f.p.v(i, k) = T(0);
+              moved = true;
+            } else if (x[k] > hi[k]) {
+              f.p.u(i, k) += hi[k] - x[k];
+              if (f.p.v(i, k) > T(0)) f.p.v(i, k) = T(0);
+              moved = true;
+            }
+          }
+          if (moved) ++count;
+        },
+        n);
+    return n;
+  }
+
+ private:
+  void predict() {
+    if (viscosity_) {
+      neighbors::for_each_row("polymech::sph::ghost_velocity", gf_, sph::GhostVelocity<T, D>{f_, wp_, par_, f_.p.v});
+      neighbors::for_each_row("polymech::sph::viscosity_fluid", ff_, sph::FluidViscosity<T, D>{f_, par_});
+      neighbors::for_each_row("polymech::sph::viscosity_wall", fw_, sph::WallViscosityPredict<T, D>{f_, wp_, par_});
+    } else {
+      gravity_predict(f_, par_);
+    }
+  }
+  void solve_pressure() {
+    PressureOperator<T, D> op{f_, wp_, par_, &ff_, &fw_, &gf_};
+    const auto r = sph::bicgstab(op, f_.rhs, f_.pressure, opts_);  // warm start: p^n in f_.pressure
+    last_.iterations = r.iterations;
+    last_.residual = r.true_relative_residual;
+    last_.history = r.history;
+    last_ok_ = r.converged();
+    last_reason_ = r.reason;
+    ppe_total_ += r.iterations;
+    ++ppe_solves_;
+    ppe_seconds_ += r.seconds;
+  }
+  void place_body_points() {
+    if constexpr (D == 2) {
+      const auto& b = body_state_;
+      const T st[9] = {T(b.centre[0]), T(b.centre[1]), T(b.theta), T(b.v[0]), T(b.v[1]), T(b.omega), T(b.a[0]),
+                       T(b.a[1]), T(b.alpha)};
+      place_body(wp_, body_offset_, body_begin_, T(0.5 * cfg_.body.diameter), st);
+    }
+  }
+  // Conventional serial staggered coupling (CSS), explicit Euler as the paper: the fluid step just taken
+  // saw the body at its old pose; the body now moves with the fluid force of that step, eqs. (31)-(32),
+  // and the next fluid step sees the new pose. A body that reaches a tank wall stops there (a kinematic
+  // contact, standing in for the shared contact module).
+  void advance_body() {
+    if constexpr (D == 2) {
+      auto& b = body_state_;
+      double out[3];
+      body_force(fw_, f_, wp_, par_, body_begin_, T(b.centre[0]), T(b.centre[1]), out);
+      b.force[0] = out[0];
+      b.force[1] = out[1];
+      b.moment = out[2];
+      const double dt = cfg_.dt, m = props_.mass, R = 0.5 * cfg_.body.diameter;
+      if (time() + dt < cfg_.body.release_time) return;  // held fixed: the force is recorded only
+      const double v0[2] = {b.v[0], b.v[1]}, w0 = b.omega;
+      // eq. (31) by explicit Euler, with an added-mass term: the fluid force of a body accelerating at a
+      // contains -m_a a (m_a = C_a rho0 pi R^2 for a cylinder); explicit staggered coupling then updates
+      // a_{n+1} = (F_rest - m_a a_n) / m, which diverges when m_a >= m (density ratio <= 1 at C_a = 1).
+      // Moving m_a a to the left, (m + m_a) a_{n+1} = F + m_a a_n - m g, has the same fixed point and is
+      // stable (not in the paper; added_mass = 0 gives the paper's plain CSS).
+      const double pi = 3.14159265358979323846;
+      const double ma = cfg_.body.added_mass * cfg_.density * pi * R * R;
+      b.v[0] += dt * (out[0] + ma * b.a[0]) / (m + ma);
+      b.v[1] += dt * (out[1] + ma * b.a[1] - m * cfg_.gravity) / (m + ma);
+      b.omega += dt * out[2] / props_.inertia;          // eq. (32)
+      b.centre[0] += dt * b.v[0];
+      b.centre[1] += dt * b.v[1];
+      b.theta += dt * b.omega;
+      const double lo[2] = {R, R}, hi[2] = {cfg_.tank[0] - R, 1e300};
+      for (int k = 0; k < 2; ++k) {
+        if (b.centre[k] < lo[k]) {
+          b.centre[k] = lo[k];
+          if (b.v[k] < 0) b.v[k] = 0;
+        } else if (b.centre[k] > hi[k]) {
+          b.centre[k] = hi[k];
+          if (b.v[k] > 0) b.v[k] = 0;
+        }
+      }
+      b.a[0] = (b.v[0] - v0[0]) / dt;
+      b.a[1] = (b.v[1] - v0[1]) / dt;
+      b.alpha = (b.omega - w0) / dt;
+      place_body_points();
+      escaped_ += push_out_of_body(f_, T(b.centre[0]), T(b.centre[1]), T(R + 0.25 * cfg_.spacing));
+    }
+  }
+  void keep_inside() {
+    Vec<T, D> lo, hi;
+    const T margin = T(0.25 * cfg_.spacing);
+    for (int k = 0; k < D; ++k) {
+      lo[k] = margin;
+      hi[k] = T(cfg_.tank[k]) - margin;
+    }
+    hi[1] = T(1e30);  // open top
+    escaped_ += keep_inside(f_, lo, hi);
+  }
+
+  std::vector<double> host_vec(const VecView<T, D>& v, bool) const {
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
+    std::vector<double> out(h.extent(0) * D);
+    for (std::size_t i = 0; i < h.extent(0); ++i)
+      for (int d = 0; d < D; ++d) out[i * D + d] = double(h(i, d));
+    return out;
+  }
+  std::vector<double> host_scalar(const View1<T>& v) const {
+    auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
+    std::vector<double> out(h.extent(0));
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = double(h(i));
+    return out;
+  }
+
+  static long long cells(double length, double l0) { return static_cast<long long>(std::llround(length / l0)); }
+
+  void build_fluid() {
+    const std::vector<double> pts = fluid_positions(cfg_);
+    const Index total = static_cast<Index>(pts.size() / D);
+    particles::allocate(f_.p, total, "polymech::isph::");
+    const auto size = static_cast<std::size_t>(total);
+    f_.x = VecView<T, D>("polymech::isph::x", size);
+    f_.vstar = VecView<T, D>("polymech::isph::vstar", size);
+    f_.work = VecView<T, D>("polymech::isph::work", size);
+    f_.rho = View1<T>("polymech::isph::rho", size);
+    f_.pressure = View1<T>("polymech::isph::pressure", size);
+    f_.rhs = View1<T>("polymech::isph::rhs", size);
+    f_.inv_diag = View1<T>("polymech::isph::inv_diag", size);
+    f_.scratch = View1<T>("polymech::isph::scratch", size);
+    f_.surface = sph::Flags("polymech::isph::surface", size);
+    diag_ = View1<T>("polymech::isph::diag", size);
+    auto h = Kokkos::create_mirror_view(f_.p.x0);
+    for (std::size_t i = 0; i < size; ++i)
+      for (int d = 0; d < D; ++d) h(i, d) = T(pts[i * D + d]);
+    Kokkos::deep_copy(f_.p.x0, h);
+  }
+
+  // Tank walls: cells of size l0 in ceil(re/l0) layers below and beside the tank (open top), one Gauss
+  // point at each centre (weight H |J| = l0^D). The ghost of a point is its mirror through the nearest
+  // point q of the tank box (a face, an edge or a corner): ghost = 2 q - x, n = (x - q)/|x - q|, d = 2|x - q|.
+  void build_walls() {
+    const double l0 = cfg_.spacing;
+    const long long layers = static_cast<long long>(std::ceil(cfg_.radius_factor - 1e-9));
+    const long long nx = cells(cfg_.tank[0], l0), ny = cells(cfg_.tank[1], l0), nz = D == 3 ? cells(cfg_.tank[2], l0) : 1;
+    const double box[3] = {nx * l0, ny * l0, nz * l0};
+    std::vector<double> pts;
+    const long long z0 = D == 3 ? -layers : 0, z1 = D == 3 ? nz + layers : 1;
+    for (long long c = z0; c < z1; ++c)
+      for (long long b = -layers; b < ny; ++b)
+        for (long long a = -layers; a < nx + layers; ++a) {
+          const bool inside = a >= 0 && a < nx && b >= 0 && (D == 2 || (c >= 0 && c < nz));
+          if (inside) continue;
+          pts.push_back((a + 0.5) * l0);
+          pts.push_back((b + 0.5) * l0);
+          if (D == 3) pts.push_back((c + 0.5) * l0);
+        }
+    const std::size_t tank_points = pts.size() / D;
+    BodyCells cells_b;
+    if constexpr (D == 2) {
+      if (body_) {
+        cells_b = body_cells(cfg_);
+        props_ = mass_properties(cfg_, cells_b);
+      }
+    }
+    const std::size_t m = tank_points + cells_b.weight.size();
+    body_begin_ = static_cast<Index>(tank_points);
+    const std::string pre = "polymech::isph::wall_";
+    wp_.x = VecView<T, D>(pre + "x", m);
+    wp_.vol = View1<T>(pre + "vol", m);
+    wp_.normal = VecView<T, D>(pre + "normal", m);
+    wp_.ghost = VecView<T, D>(pre + "ghost", m);
+    wp_.dist = View1<T>(pre + "dist", m);
+    wp_.velocity = VecView<T, D>(pre + "velocity", m);
+    wp_.accel = VecView<T, D>(pre + "accel", m);
+    wp_.p = View1<T>(pre + "p", m);
+    wp_.u = VecView<T, D>(pre + "u", m);
+    wp_.shepard = View1<T>(pre + "shepard", m);
+    auto hx = Kokkos::create_mirror_view(wp_.x);
+    auto hv = Kokkos::create_mirror_view(wp_.vol);
+    auto hn = Kokkos::create_mirror_view(wp_.normal);
+    auto hg = Kokkos::create_mirror_view(wp_.ghost);
+    auto hd = Kokkos::create_mirror_view(wp_.dist);
+    for (std::size_t k = 0; k < tank_points; ++k) {
+      double q[3], r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double x = pts[k * D + d];
+        q[d] = std::min(std::max(x, 0.0), box[d]);
+        r2 += (x - q[d]) * (x - q[d]);
+      }
+      const double r = std::sqrt(r2);
+      for (int d = 0; d < D; ++d) {
+        const double x = pts[k * D + d];
+        hx(k, d) = T(x);
+        hn(k, d) = T((x - q[d]) / r);
+        hg(k, d) = T(2 * q[d] - x);
+      }
+      hv(k) = T(std::pow(l0, D));
+      hd(k) = T(2 * r);
+    }
+    if (!cells_b.weight.empty()) {  // effect `rigid_body` only: nothing allocated without it
+      body_offset_ = VecView<T, D>("polymech::isph::body_offset", cells_b.weight.size());
+      auto ho = Kokkos::create_mirror_view(body_offset_);
+      for (std::size_t k = 0; k < cells_b.weight.size(); ++k) {
+        for (int d = 0; d < D; ++d) ho(k, d) = T(cells_b.offset[2 * k + d]);
+        hv(tank_points + k) = T(cells_b.weight[k]);
+      }
+      Kokkos::deep_copy(body_offset_, ho);
+    }
+    Kokkos::deep_copy(wp_.x, hx);
+    Kokkos::deep_copy(wp_.vol, hv);
+    Kokkos::deep_copy(wp_.normal, hn);
+    Kokkos::deep_copy(wp_.ghost, hg);
+    Kokkos::deep_copy(wp_.dist, hd);
+  }
+
+  Config cfg_;
+  bool viscosity_ = false, stabilization_ = false, body_ = false;
+  Index body_begin_ = 0;
+  VecView<T, D> body_offset_;
+  MassProperties props_;
+  BodyState body_state_;
+  sph::Params<T, D> par_;
+  sph::Fluid<T, D> f_;
+  sph::WallPoints<T, D> wp_;
+  View1<T> diag_;
+  neighbors::NeighborSearch<T, D> search_ff_, search_fw_, search_gf_;
+  neighbors::NeighborList ff_, fw_, gf_;
+  solvers::SolverOptions opts_;
+  PpeRecord last_;
+  bool last_ok_ = true;
+  std::string last_reason_;
+  long long ppe_total_ = 0, ppe_solves_ = 0, escaped_ = 0;
+  double ppe_seconds_ = 0.0;
+  models::StateRegistry state_;
+  std::int64_t step_ = 0;
+};
+
+}  // namespace polymech::isph

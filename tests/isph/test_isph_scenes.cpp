@@ -1,0 +1,81 @@
+// ISPH scenes: every shipped scenes/isph/*.toml loads; bad scenes are refused naming file:line and key.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "io/isph_scene.hpp"
+#include "support/error_messages.hpp"
+
+namespace fs = std::filesystem;
+namespace io = polymech::io;
+using polymech::testing::line_of;
+using polymech::testing::replace_once;
+
+namespace {
+
+const std::string kBase = R"(title = "tank"
+
+[model]
+kind = "isph"
+effects = ["viscosity", "stabilization"]
+
+[fluid]
+density = 1000.0
+spacing = 0.01
+
+[tank]
+case = "dam_break"
+width = 0.4
+height = 0.3
+water_width = 0.1
+water_height = 0.2
+
+[time]
+dt = 5e-4
+end_time = 0.1
+)";
+
+void expect_error(const std::string& text, const std::string& at, const std::vector<std::string>& fragments) {
+  polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_isph_scene(p); }, line_of(text, at),
+                                       fragments);
+}
+
+}  // namespace
+
+TEST(IsphScenes, EveryShippedSceneLoads) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(src) / "scenes" / "isph")) {
+    if (e.path().extension() != ".toml") continue;
+    const auto s = io::load_isph_scene(e.path());
+    EXPECT_GT(s.steps, 0) << e.path();
+    EXPECT_LE(s.config.dt, s.limit.limit) << e.path();
+    EXPECT_GT(s.cost.items, 0.0);
+    ++n;
+  }
+  EXPECT_GE(n, 3);
+}
+
+TEST(IsphScenes, BaseLoads) {
+  polymech::testing::TempDir dir;
+  const auto s = io::load_isph_scene(dir.write("scene.toml", kBase));
+  EXPECT_EQ(s.case_name, "dam_break");
+  EXPECT_EQ(s.steps, 200);
+  EXPECT_EQ(s.cost.items, 200.0);
+}
+
+TEST(IsphScenes, BadValuesAreRefused) {
+  expect_error(replace_once(kBase, "dt = 5e-4", "dt = 5e-3"), "dt = 5e-3", {"time.dt", "above the limit"});
+  expect_error(replace_once(kBase, "water_width = 0.1", "water_width = 0.5"), "water_width = 0.5",
+               {"tank.water_width", "larger than the tank"});
+  expect_error(replace_once(kBase, "water_width = 0.1", "water_width = 0.4"), "water_width = 0.4",
+               {"tank.water_width", "dam break"});
+  expect_error(replace_once(kBase, "spacing = 0.01", "spacing = 1e300"), "spacing = 1e300", {"fluid.spacing"});
+  expect_error(replace_once(kBase, "effects = [\"viscosity\", \"stabilization\"]", "effects = [\"rigid_body\"]"),
+               "effects = [\"rigid_body\"]", {"rigid_body", "[body]"});
+  expect_error(replace_once(kBase, "case = \"dam_break\"", "case = \"sloshing\""), "case = \"sloshing\"",
+               {"tank.case", "hydrostatic"});
+}
