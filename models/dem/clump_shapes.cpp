@@ -191,7 +191,7 @@ Mat3 rotation_of(const std::array<double, 4>& q) {
            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
            {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
 }
-std::array<double, 3> apply(const Mat3& r, const std::array<double, 3>& v) {
+std::array<double, 3> rotate_by(const Mat3& r, const std::array<double, 3>& v) {
   std::array<double, 3> out{};
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) out[a] += r[a][b] * v[b];
@@ -233,12 +233,12 @@ ClumpBodies expand_clumps(const Config& c) {
     for (int a = 0; a < 3; ++a)
       for (int m = 0; m < 3; ++m) wb[a] += r[m][a] * k.omega[m];
     for (int a = 0; a < 3; ++a) wb[a] *= b.inertia[a];
-    b.angular_momentum = apply(r, wb);
+    b.angular_momentum = rotate_by(r, wb);
     const int body = static_cast<int>(out.bodies.size());
     out.bodies.push_back(b);
     for (const auto& sp : c.clump_shapes[sh].spheres) {
       const std::array<double, 3> local = {s * (sp[0] - p.centre[0]), s * (sp[1] - p.centre[1]), s * (sp[2] - p.centre[2])};
-      const std::array<double, 3> arm = apply(r0, local);  // world
+      const std::array<double, 3> arm = rotate_by(r0, local);  // world
       std::array<double, 3> offset{};                      // body frame: A^T local
       for (int a = 0; a < 3; ++a)
         for (int m = 0; m < 3; ++m) offset[a] += p.axes[m][a] * local[m];
