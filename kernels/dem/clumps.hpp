@@ -46,8 +46,11 @@ void clump_drift(const ClumpSet<T>& c, double dt) {
 // spin w; with `positions`, also its centre X + R offset (as u = x - x0).
 template <class T>
 void clump_members(const SphereSet<T>& s, const ClumpSet<T>& c, bool positions) {
-  const auto bodies = c.bodies, offset = c.offset;
-  const auto body = s.body, x0 = s.x0, u = s.u, v = s.v, omega = s.omega;
+  // one View per declaration: nvcc 11.8 rejects an `auto` list whose types differ (docs/DEVELOPING.md)
+  const auto bodies = c.bodies;
+  const auto offset = c.offset;
+  const auto body = s.body;
+  const auto x0 = s.x0, u = s.u, v = s.v, omega = s.omega;
   Kokkos::parallel_for(
       "polymech::dem::clump_members", range(s.size()), KOKKOS_LAMBDA(const Index i) {
         const int b = body(i);
@@ -72,7 +75,9 @@ void clump_members(const SphereSet<T>& s, const ClumpSet<T>& c, bool positions) 
 // thread count).
 template <class T>
 void clump_loads(const SphereSet<T>& s, const ClumpSet<T>& c, const Vec3<T>& g) {
-  const auto bodies = c.bodies, first = c.first_member, members = c.members;
+  const auto bodies = c.bodies;
+  const auto first = c.first_member;
+  const auto members = c.members;
   Kokkos::parallel_for(
       "polymech::dem::clump_loads", range(c.size()), KOKKOS_LAMBDA(const Index b) {
         auto& rb = bodies(b);
