@@ -93,6 +93,25 @@ SurfaceMesh<T> make_surface_mesh(const std::vector<double>& nodes, const std::ve
   return m;
 }
 
+// Kernel "polymech::contact::place_rigid_surface": a surface that moves as one rigid body, nodes =
+// centre + R(q) reference (the reference nodes relative to the centre in the body frame, q the unit
+// quaternion (w, x, y, z) body -> world), then its facet geometry (update_geometry).
+template <class T>
+void place_rigid(const SurfaceMesh<T>& m, const VecView<T, 3>& reference, const double (&centre)[3], const double (&q)[4]) {
+  const auto nodes = m.nodes;
+  const double c0 = centre[0], c1 = centre[1], c2 = centre[2], w = q[0], u0 = q[1], u1 = q[2], u2 = q[3];
+  Kokkos::parallel_for(
+      "polymech::contact::place_rigid_surface", range(m.node_count()), KOKKOS_LAMBDA(const Index n) {
+        const double x0 = double(reference(n, 0)), x1 = double(reference(n, 1)), x2 = double(reference(n, 2));
+        // y = x + w t + u x t, t = 2 u x x (the rotation of a unit quaternion)
+        const double t0 = 2.0 * (u1 * x2 - u2 * x1), t1 = 2.0 * (u2 * x0 - u0 * x2), t2 = 2.0 * (u0 * x1 - u1 * x0);
+        nodes(n, 0) = T(c0 + x0 + w * t0 + (u1 * t2 - u2 * t1));
+        nodes(n, 1) = T(c1 + x1 + w * t1 + (u2 * t0 - u0 * t2));
+        nodes(n, 2) = T(c2 + x2 + w * t2 + (u0 * t1 - u1 * t0));
+      });
+  update_geometry(m);
+}
+
 // The largest bounding radius of the facets (host): a point within distance d of a facet is within
 // d + max_facet_radius of its centroid, the radius of a two-set broad phase of points against facets.
 template <class T>

@@ -9,10 +9,13 @@
 // contact starts unloaded. An empty hist (friction off) is never read.
 #pragma once
 
+#include <array>
+
 #include "contact/sphere_facet.hpp"
 #include "dem/hertz_mindlin.hpp"
 #include "dem/spheres.hpp"
 #include "neighbors/neighbor_list.hpp"
+#include "particles/reductions.hpp"
 
 namespace polymech::dem {
 
@@ -113,16 +116,35 @@ void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, cons
 // centroid lies within r + the largest facet radius + skin: a few for a mesh finer than the sphere).
 inline constexpr int max_facets_per_sphere = 24;
 
-// Kernel "polymech::dem::sphere_facet": spheres against the facets of a static surface mesh listed in
-// `list` (two-set: sphere i -> facet j), by the inside-outside algorithm with one force per touching
-// feature (contact/sphere_facet.hpp). R* = r and m* = m (a rigid, fixed surface).
+// The rigid motion of a surface mesh (all of it one body, e.g. a wheel): a material point at q moves
+// with velocity + omega x (q - centre). Zero for a fixed surface.
+template <class T>
+struct SurfaceMotion {
+  Vec3<T> centre = Vec3<T>::zero(), velocity = Vec3<T>::zero(), omega = Vec3<T>::zero();
+  KOKKOS_INLINE_FUNCTION Vec3<T> at(const Vec3<T>& q) const { return velocity + cross(omega, q - centre); }
+};
+
+// What sphere i gives the surface: the force -f of its facet contacts and its moment (q - centre) x (-f)
+// about SurfaceMotion::centre, (fx, fy, fz, mx, my, mz); summed over the spheres (ordered_sum) it is
+// the surface's load, minus the spheres' to round-off (the momentum exchange is exact).
+template <class T>
+using WrenchView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
+
+// Kernel "polymech::dem::sphere_facet": spheres against the facets of a surface mesh listed in `list`
+// (two-set: sphere i -> facet j), by the inside-outside algorithm with one force per touching feature
+// (contact/sphere_facet.hpp). R* = r and m* = m (a rigid surface, fixed or moving with `motion`: the
+// relative velocity of eqs. (12)-(15) is the sphere's surface point's less the facet's material
+// point's). With a non-empty `reaction`, row i gets what sphere i gives the surface (WrenchView).
 template <class T>
 void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh, const neighbors::NeighborList& list,
-                         const SpringView<T>& hist, const HertzMindlin<T>& p, bool friction, T dt) {
+                         const SpringView<T>& hist, const HertzMindlin<T>& p, bool friction, T dt,
+                         const SurfaceMotion<T>& motion = SurfaceMotion<T>(), const WrenchView<T>& reaction = WrenchView<T>()) {
+  const bool react = reaction.extent(0) > 0;
   Kokkos::parallel_for(
       "polymech::dem::sphere_facet", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
+        Vec3<T> f_sum = Vec3<T>::zero(), m_sum = Vec3<T>::zero();
         contact::FacetContact<T> c[max_facets_per_sphere];
         Index facet[max_facets_per_sphere];
         const Offset begin = list.begin(i);
@@ -149,7 +171,7 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
             continue;
           }
           const Vec3<T> n = c[m].normal;
-          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n);
+          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - motion.at(c[m].point);
           Vec3<T> xi = detail::spring(hist, k, friction);
           if (friction && norm2(xi) == T(0)) {
             xi = carried;
@@ -158,8 +180,28 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
           const auto f = hertz_mindlin_force(p, ri, mi, c[m].overlap, n, v_rel, friction, dt, xi);
           if (friction) store<3>(hist, k, xi);
           detail::add_contact(s, i, n, ri, ri, f.force);
+          f_sum -= f.force;
+          m_sum -= cross(c[m].point - motion.centre, f.force);
         }
+        if (react)
+          for (int k = 0; k < 3; ++k) {
+            reaction(i, k) = f_sum[k];
+            reaction(i, 3 + k) = m_sum[k];
+          }
       });
+}
+
+// Kernel "polymech::dem::wheel_reaction_sum": the rows of a WrenchView summed in index order (the
+// surface's total load; the same for any thread count).
+template <class T>
+std::array<double, 6> wrench_sum(const WrenchView<T>& w) {
+  const auto sum = particles::ordered_sum<6>("polymech::dem::wheel_reaction_sum", static_cast<std::int64_t>(w.extent(0)),
+                                             KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
+                                               for (int k = 0; k < 6; ++k) acc[k] += double(w(i, k));
+                                             });
+  std::array<double, 6> out{};
+  for (int k = 0; k < 6; ++k) out[static_cast<std::size_t>(k)] = sum[k];
+  return out;
 }
 
 }  // namespace polymech::dem

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dem/clump_shapes.hpp"
+#include "dem/wheel.hpp"
 #include "effects.hpp"
 
 namespace polymech::dem {
@@ -56,6 +57,7 @@ struct Config {
   std::vector<SphereInit> spheres;
   std::vector<PlaneInit> planes;
   SurfaceInit surface;           // the `fe_surfaces` effect
+  WheelSpec wheel;               // the `rigid_wheel` effect: `surface` is the wheel's, relative to its centre
   std::vector<ClumpShape> clump_shapes;  // the `clumps` effect
   std::vector<ClumpInit> clumps;
   int mass_columns = 200;        // columns across a shape for its mass properties (clump_shapes.hpp)

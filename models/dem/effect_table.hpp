@@ -22,6 +22,9 @@ inline const std::vector<EffectSpec>& effect_table() {
        {"polymech::dem::clump_kick", "polymech::dem::clump_drift", "polymech::dem::clump_members",
         "polymech::dem::clump_loads"},
        "a rigid body per clump (~200 B), a body index and a body-frame offset per sphere"},
+      {"rigid_wheel", "the FE surface is a rigid wheel driven over the bed: load and speed schedule, slip (sec. 4)",
+       {"fe_surfaces"}, {"polymech::contact::place_rigid_surface", "polymech::dem::wheel_reaction_sum"},
+       "one rigid body, the mesh's reference nodes and 6 reals per sphere (what it gives the wheel)"},
   };
   return specs;
 }

@@ -279,3 +279,61 @@ TEST(SphereFacet, ConvexRidgeGivesOneContinuousForce) {
     EXPECT_NEAR(f, std::sqrt(all[0][0] * all[0][0] + all[0][2] * all[0][2]), 1e-9 * f) << i;
   }
 }
+
+// A moving surface (a wheel's tread): the relative velocity of the contact is the sphere's less the
+// facet's material point's, so spheres at rest on a sliding, turning surface are dragged along its
+// motion at each contact point; the reaction rows the kernel writes are minus the spheres' forces and
+// their moments about the motion's centre, to round-off (what the wheel feels is what the gravel gets).
+TEST(SphereFacet, AMovingSurfaceDragsSpheresAndFeelsTheirReaction) {
+  const auto mesh = grid_mesh(4, 4, 0.01);
+  const double r = 0.004, delta = 2e-6, density = 2500, dt = 1e-6;
+  std::vector<V3> p;
+  for (double x : {0.006, 0.017, 0.031})
+    for (double y : {0.008, 0.024, 0.035}) p.push_back(V3{{x, y, r - delta}});
+  auto s = spheres_at(p, r, density);
+  const pm::Index n = s.size(), nf = mesh.facet_count();
+  pm::neighbors::NeighborList all;
+  all.offsets = Kokkos::View<pm::Offset*, pm::MemSpace>("off", n + 1);
+  all.neighbors = Kokkos::View<pm::Index*, pm::MemSpace>("nbr", std::size_t(n * nf));
+  auto ho = Kokkos::create_mirror_view(all.offsets);
+  auto hn = Kokkos::create_mirror_view(all.neighbors);
+  for (pm::Index i = 0; i <= n; ++i) ho(i) = i * nf;
+  for (pm::Index i = 0; i < n; ++i)
+    for (pm::Index f = 0; f < nf; ++f) hn(i * nf + f) = f;
+  Kokkos::deep_copy(all.offsets, ho);
+  Kokkos::deep_copy(all.neighbors, hn);
+  all.num_particles = n;
+  all.num_pairs = n * nf;
+  dm::SpringView<double> hist("hist", std::size_t(n * nf));
+  dm::WrenchView<double> reaction("reaction", std::size_t(n));
+  dm::SurfaceMotion<double> motion;
+  motion.centre = V3{{0.02, 0.02, 0.0}};
+  motion.velocity = V3{{0.3, -0.1, 0.0}};
+  motion.omega = V3{{0.0, 0.0, 20.0}};
+  const dm::HertzMindlin<double> law{5e10, 2e10, dm::damping_ratio(0.5), 0.4};
+  dm::body_forces(s, V3::zero());
+  dm::sphere_facet_forces(s, mesh, all, hist, law, true, dt, motion, reaction);
+  const auto a = accelerations(s);
+  auto hr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), reaction);
+  const double m = density * 4.0 / 3.0 * dm::kPi * r * r * r;
+  V3 force_sum = V3::zero(), moment_sum = V3::zero(), reaction_force = V3::zero(), reaction_moment = V3::zero();
+  for (pm::Index i = 0; i < n; ++i) {
+    const V3 f = m * a[i], q{{p[i][0], p[i][1], 0.0}};
+    const V3 u = motion.at(q);  // the surface under sphere i
+    const V3 ft{{f[0], f[1], 0.0}};
+    EXPECT_NEAR(f[2], 4.0 / 3.0 * 5e10 * std::sqrt(r) * std::pow(delta, 1.5), 1e-9 * f[2]) << "sphere " << i;
+    // dragged along: the tangential force is parallel to the surface's velocity there
+    EXPECT_GT(dot(ft, u), 0.999 * norm(ft) * norm(u)) << "sphere " << i;
+    force_sum += f;
+    moment_sum += cross(q - motion.centre, f);
+    for (int k = 0; k < 3; ++k) {
+      reaction_force[k] += hr(i, k);
+      reaction_moment[k] += hr(i, 3 + k);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(reaction_force[k], -force_sum[k], 1e-12 * norm(force_sum)) << k;
+    EXPECT_NEAR(reaction_moment[k], -moment_sum[k], 1e-12 * norm(force_sum) * 0.03) << k;
+  }
+  EXPECT_GT(norm(moment_sum), 0.0);
+}
