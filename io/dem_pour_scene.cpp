@@ -1,5 +1,6 @@
 #include "io/dem_pour_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/ranges.hpp"
@@ -7,6 +8,49 @@
 namespace polymech::io {
 
 namespace pl = polymech::io::plausible;
+
+namespace {
+
+// [wheel] (seed 002 paper 2, sec. 4): the tyre's size, the load and speed schedule (times after
+// `start`, when the wheel is set on the settled bed), the slip.
+void read_wheel(const SceneTable& t, const dem::PourSpec& p, double duration, dem::WheelSpec& w) {
+  w.radius = t.real("radius", Range{1e-3, 100.0, false, false, "m"});
+  w.width = t.real("width", Range{1e-3, 100.0, false, false, "m"});
+  if (w.width >= p.bin[1]) t.fail("width", "= " + format_number(w.width) + " m does not fit the bin's width " + format_number(p.bin[1]) + " m");
+  const double facet = t.real("facet_size", p.radius_max, Range{1e-5, 10.0, false, false, "m (the mesh's facets, about; default gravel.radius_max)"});
+  const double two_pi = 6.283185307179586;
+  w.around = std::max(16, static_cast<int>(std::ceil(two_pi * w.radius / facet)));
+  w.across = std::max(1, static_cast<int>(std::ceil(w.width / facet)));
+  if (double(w.around) * w.across > 1e7) t.fail("facet_size", "makes more than 1e7 facets; make it larger");
+  w.side_depth = t.real("side_depth", 0.25 * w.radius, Range{0.0, 100.0, false, false, "m (the side walls' depth below the tread)"});
+  if (w.side_depth >= w.radius) t.fail("side_depth", "must be smaller than radius = " + format_number(w.radius) + " m");
+  w.mass = t.real("mass", pl::mass());
+  w.load = t.real("load", Range{0.0, 1e9, false, false, "N (the vertical load, downwards)"});
+  const auto ramp = [&t](const std::string& key, double& from, double& to) {
+    const auto r = t.reals(key, Range{0.0, 1e3, false, false, "s after wheel.start"});
+    if (r.size() != 2 || !(r[1] > r[0])) t.fail(key, "must be [from, to] with to > from (s after wheel.start)");
+    from = r[0];
+    to = r[1];
+  };
+  ramp("load_ramp", w.load_from, w.load_to);
+  w.speed = t.real("speed", Range{0.0, 1e3, false, false, "m/s (forward, +x)"});
+  ramp("speed_ramp", w.speed_from, w.speed_to);
+  w.slip = t.real("slip", Range{0.0, 1.0, false, true, "(1 - v / (omega R); 0.2: 20 %)"});
+  w.start = t.real("start", Range{0.0, 1e3, false, false, "s (when the wheel is set on the bed)"});
+  if (w.start >= duration) t.fail("start", "= " + format_number(w.start) + " s is not before time.duration = " + format_number(duration) + " s");
+  w.x_start = t.real("x_start", Range{0.0, 1e3, false, false, "m (the axis' position along the bin)"});
+  if (w.x_start <= 0 || w.x_start >= p.bin[0]) t.fail("x_start", "must lie inside the bin, (0, " + format_number(p.bin[0]) + ") m");
+  w.y_centre = 0.5 * p.bin[1];
+  // where the axis ends: the speed ramp's mean speed during it, then the full speed
+  const double run = duration - w.start, ramp_time = std::min(run, w.speed_to) - std::min(run, w.speed_from);
+  const double travel = w.speed * (0.5 * ramp_time + std::max(0.0, run - w.speed_to));
+  if (w.x_start + travel >= p.bin[0])
+    t.fail("speed", "carries the axis to x = " + format_number(w.x_start + travel) + " m by time.duration, past the bin's end " +
+                        format_number(p.bin[0]) + " m; lower the speed, the duration or x_start");
+  t.finish();
+}
+
+}  // namespace
 
 DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::string& accuracy,
                                  const std::string& precision) {
@@ -36,7 +80,11 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
   if (c.restitution < 1.0 && !fx.has("damping")) contact.fail("restitution", "< 1 needs the effect \"damping\" in model.effects");
   if (c.friction > 0 && !fx.has("friction")) contact.fail("friction", "> 0 needs the effect \"friction\" in model.effects");
   contact.finish();
-  if (fx.has("fe_surfaces")) s.model.fail("effects", "lists \"fe_surfaces\", but a pour has no FE surface (the bin is planes)");
+  const auto wheel = root.optional_table("wheel");
+  if (fx.has("fe_surfaces") && !wheel)
+    s.model.fail("effects", "lists \"fe_surfaces\", but the scene has no [wheel] (the bin is planes; the wheel is the FE surface)");
+  if (wheel && !fx.has("rigid_wheel"))
+    wheel->fail_table("needs the effects \"fe_surfaces\" and \"rigid_wheel\" in model.effects");
 
   const SceneTable gravel = root.table("gravel");
   auto& p = out.pour;
@@ -70,6 +118,7 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
 
   const SceneTable time = root.table("time");
   out.duration = time.real("duration", pl::duration());
+  if (wheel) read_wheel(*wheel, p, out.duration, c.wheel);
   if (p.release_at > 0 && p.release_at >= out.duration)
     bin.fail("release_at", "= " + format_number(p.release_at) + " s is not before time.duration = " + format_number(out.duration) + " s");
   const double dt = time.real("dt", 0.0, Range{0.0, pl::time_step().hi, false, false, "s (0: dt_safety x the limit)"});
@@ -92,7 +141,12 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
   root.finish();
 
   try {
-    const auto pour = dem::pour_config(c, p);
+    auto pour = dem::pour_config(c, p);
+    if (c.wheel.enabled()) {
+      c.wheel.parked = {c.wheel.x_start, c.wheel.y_centre, dem::pour_top(p) + 3 * p.radius_max + 2 * c.wheel.radius};
+      pour.wheel = c.wheel;
+      pour.surface = dem::wheel_surface(c.wheel);
+    }
     const double top = dem::pour_top(p);
     if (top > 10 * p.bin[2])
       bin.fail("size", "holds " + std::to_string(p.count) + " particles in layers up to z = " + format_number(top) +
@@ -112,7 +166,9 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
                             out.header.accuracy + "')",
                         "time.duration = " + format_number(out.duration) + " s", "dt = " + format_number(c.dt) + " s"};
   check_size(out.cost, gravel);
-  if (out.sample_every == 0) out.sample_every = std::max<std::int64_t>(1, static_cast<std::int64_t>(out.cost.steps / 200));
+  if (out.sample_every == 0)  // with a wheel: 400 samples of its drive (the histories of Figs. 8-10)
+    out.sample_every = std::max<std::int64_t>(
+        1, c.wheel.enabled() ? static_cast<std::int64_t>((out.duration - c.wheel.start) / c.dt / 400) : static_cast<std::int64_t>(out.cost.steps / 200));
   return out;
 }
 

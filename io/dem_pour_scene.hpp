@@ -9,6 +9,8 @@
 //   [gravel] count, shapes = ["cylinder", "cone", "cube"] (or ["sphere"]), radius_min, radius_max, seed
 //   [bin] size = [lx, ly, lz], release_at (s; > 0: the wall x = lx opens, a heap forms)
 //   [time] duration, dt (0: dt_safety x the limit), dt_safety
+//   [wheel] (effects "fe_surfaces", "rigid_wheel"; seed 002 paper 2, sec. 4) radius, width, facet_size,
+//           side_depth, mass, load, load_ramp = [from, to], speed, speed_ramp = [from, to], slip, start, x_start
 //   [output] snapshots, sample_every    [accuracy] default = "paper" (draft: count / 4, standard: / 2)
 #pragma once
 

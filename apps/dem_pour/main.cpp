@@ -8,6 +8,10 @@
 // and top particle height) and fields.h5 + fields.xdmf (ParaView: displacement from the start,
 // velocity, radius, clump). --lammps-data writes the initial particles as a LAMMPS/LIGGGHTS data file
 // (atom_style sphere; spheres only) for the side-by-side run of bench/peers/liggghts.
+// With a [wheel] (scenes/dem/wheel_gravel*.toml; seed 002 paper 2, sec. 4) the rigid wheel is set on the
+// bed at wheel.start and driven: wheel.csv (its histories, Figs. 8-10: vertical force, tractive force,
+// rim sinkage, driving torque), track_profile.csv (the bed's surface across the track, Fig. 7) and the
+// summary's sinkage_mm, vertical_force, tractive_force (means over the steady stage).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +51,55 @@ void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, c
     out << i + 1 << " 1 " << 2 * s.radius << " " << c.particle.density << " " << s.position[0] << " " << s.position[1] << " "
         << s.position[2] << "\n";
   }
+}
+
+// Means of the wheel's histories over its steady stage: the last half of the time after the speed ramp
+// (the whole drive's last quarter when that is shorter than a quarter of it).
+struct WheelMeans {
+  double from = 0.0, sinkage = 0.0, vertical = 0.0, tractive = 0.0, torque = 0.0;
+  int samples = 0;
+};
+WheelMeans steady_means(const std::vector<std::vector<double>>& w, double speed_to) {
+  WheelMeans m;
+  if (w[0].empty()) return m;
+  const double end = w[1].back();
+  m.from = std::max(speed_to + 0.5 * (end - speed_to), 0.75 * end);
+  for (std::size_t k = 0; k < w[0].size(); ++k) {
+    if (w[1][k] < m.from) continue;
+    m.sinkage += w[4][k];
+    m.vertical += w[5][k];
+    m.tractive += w[6][k];
+    m.torque += w[7][k];
+    ++m.samples;
+  }
+  if (m.samples > 0) {
+    m.sinkage /= m.samples;
+    m.vertical /= m.samples;
+    m.tractive /= m.samples;
+    m.torque /= m.samples;
+  }
+  return m;
+}
+
+// The bed's surface across the track (Fig. 7): the highest sphere top in columns of 2 r_max in y over
+// the x range the wheel has run over, averaged over x; with the bed's level under the wheel at start.
+std::vector<std::vector<double>> track_profile(const std::vector<std::array<double, 4>>& rows, const dm::PourSpec& p, double x0, double x1) {
+  const double cell = 2 * p.radius_max;
+  const int ny = std::max(1, static_cast<int>(p.bin[1] / cell)), nx = std::max(1, static_cast<int>((x1 - x0) / cell));
+  std::vector<double> top(static_cast<std::size_t>(nx * ny), 0.0);
+  for (const auto& r : rows) {
+    if (r[0] < x0 || r[0] >= x0 + nx * cell || r[1] < 0 || r[1] >= ny * cell) continue;
+    const auto k = static_cast<std::size_t>(static_cast<int>((r[0] - x0) / cell) * ny + static_cast<int>(r[1] / cell));
+    top[k] = std::max(top[k], r[2] + r[3]);
+  }
+  std::vector<std::vector<double>> cols(2);
+  for (int j = 0; j < ny; ++j) {
+    double h = 0;
+    for (int i = 0; i < nx; ++i) h += top[static_cast<std::size_t>(i * ny + j)];
+    cols[0].push_back((j + 0.5) * cell);
+    cols[1].push_back(h / nx);
+  }
+  return cols;
 }
 
 int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt,
@@ -90,7 +143,15 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
     snapshots.add(step, model.time(), {{"displacement", 3, hu}, {"velocity", 3, hv}, {"radius", 1, radius}, {"clump", 1, clump}});
   };
   std::vector<std::vector<double>> series(4);  // time, kinetic, mean height, top height
+  const bool wheel = c.wheel.enabled();
+  std::vector<std::vector<double>> wheel_series(10);  // see the header of wheel.csv below
   auto sample = [&](std::int64_t) {
+    if (wheel && model.wheel().placed) {
+      const auto w = model.wheel();
+      const double row[10] = {model.time(), w.time, w.centre[0], w.centre[2], 1e3 * w.sinkage, w.vertical_force, w.tractive_force,
+                              w.driving_torque, w.load, w.speed};
+      for (std::size_t k = 0; k < 10; ++k) wheel_series[k].push_back(row[k]);
+    }
     const auto rows = sphere_rows(model);
     double mean = 0, top = 0;
     for (const auto& r : rows) {
@@ -121,10 +182,12 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
   checkpoints.attach(hooks, [&](pm::models::Archive& a) {
     snapshots.save(a);
     a.put_columns("dem_pour/series", series);
+    if (wheel) a.put_columns("dem_pour/wheel", wheel_series);
   }, opt.quiet);
   if (hooks.resume) {
     snapshots.resume(*hooks.resume);
     series = hooks.resume->get_columns<double>("dem_pour/series");
+    if (wheel) wheel_series = hooks.resume->get_columns<double>("dem_pour/wheel");
     hooks.sample_at_start = false;
     progress.resume_at(checkpoints.resume_step());
   }
@@ -158,6 +221,28 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
     j["release_at"] = scene.pour.release_at;
     std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, angle);
   }
+  if (wheel) {  // seed 002 paper 2, Figs. 7-10
+    pm::io::write_csv(opt.out / "wheel.csv",
+                      {"time", "time_from_start", "x", "z", "sinkage_mm", "vertical_force", "tractive_force", "driving_torque", "load", "speed"},
+                      wheel_series);
+    const auto w = model.wheel();
+    const auto means = steady_means(wheel_series, c.wheel.speed_to);
+    pm::io::write_csv(opt.out / "track_profile.csv", {"y", "surface_height"},
+                      track_profile(rows, scene.pour, c.wheel.x_start, std::max(c.wheel.x_start + 2 * scene.pour.radius_max, w.centre[0])));
+    j["sinkage_mm"] = means.samples > 0 ? nlohmann::json(means.sinkage) : nlohmann::json(nullptr);
+    j["vertical_force"] = means.samples > 0 ? nlohmann::json(means.vertical) : nlohmann::json(nullptr);
+    j["tractive_force"] = means.samples > 0 ? nlohmann::json(means.tractive) : nlohmann::json(nullptr);
+    j["driving_torque"] = means.samples > 0 ? nlohmann::json(means.torque) : nlohmann::json(nullptr);
+    j["steady_stage_from"] = means.from;
+    j["paper_sinkage_mm"] = 53.6;
+    j["wheel"] = {{"radius", c.wheel.radius}, {"width", c.wheel.width}, {"mass", c.wheel.mass}, {"load", c.wheel.load},
+                  {"speed", c.wheel.speed}, {"slip", c.wheel.slip}, {"start", c.wheel.start}, {"facets_around", c.wheel.around},
+                  {"facets_across", c.wheel.across}, {"bed_level", w.bed_level}, {"travel", w.centre[0] - c.wheel.x_start},
+                  {"time_driven", w.time}};
+    std::printf("wheel: %.3g s after it was set down, travelled %.3g m; steady stage (t >= %.3g s): rim sinkage %.2f mm (paper, deformable "
+                "tyre: 53.6), vertical force %.4g N (load %.4g), tractive force %.4g N, driving torque %.4g N m (wheel.csv)\n",
+                w.time, w.centre[0] - c.wheel.x_start, means.from, means.sinkage, means.vertical, c.wheel.load, means.tractive, means.torque);
+  }
   j["packing_fraction"] = bed ? nlohmann::json(phi) : nlohmann::json(nullptr);
   if (!bed) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
   j["bed_box"] = {{"lo", lo}, {"hi", hi}};
@@ -176,6 +261,10 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
   j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["sphere_list_builds"] = model.sphere_list_builds();
   j["files"] = {"summary.json", "energy.csv", "fields.h5", xdmf.filename().string()};
+  if (wheel) {
+    j["files"].push_back("wheel.csv");
+    j["files"].push_back("track_profile.csv");
+  }
   pm::io::write_json(opt.out / "summary.json", j);
   checkpoints.finished();
   std::printf("%d particles (%lld spheres) poured in %.3f s simulated: packing fraction %.4f in [%.3g, %.3g] x [%.3g, %.3g] x "
