@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include "dem/dem.hpp"
+#include "dem/pour.hpp"
 
 namespace pm = polymech;
 namespace dm = polymech::dem;
@@ -42,15 +43,7 @@ dm::Config dense_block(int n, bool clumps) {
           c.spheres.push_back(s);
         }
       }
-  dm::PlaneInit floor, w0, w1, w2, w3;
-  floor.normal = {0, 0, 1};
-  w0.normal = {1, 0, 0};
-  w1.point = {side, 0, 0};
-  w1.normal = {-1, 0, 0};
-  w2.normal = {0, 1, 0};
-  w3.point = {0, side, 0};
-  w3.normal = {0, -1, 0};
-  c.planes = {floor, w0, w1, w2, w3};
+  c.planes = dm::box_planes(side, side);
   return c;
 }
 

@@ -88,16 +88,20 @@ Config pour_config(const Config& base, const PourSpec& s) {
       c.clumps.push_back(cl);
     }
   }
+  c.planes = box_planes(s.bin[0], s.bin[1]);
+  return c;
+}
+
+std::vector<PlaneInit> box_planes(double lx, double ly) {
   PlaneInit floor, w0, w1, w2, w3;
   floor.normal = {0, 0, 1};
   w0.normal = {1, 0, 0};
-  w1.point = {s.bin[0], 0, 0};
+  w1.point = {lx, 0, 0};
   w1.normal = {-1, 0, 0};
   w2.normal = {0, 1, 0};
-  w3.point = {0, s.bin[1], 0};
+  w3.point = {0, ly, 0};
   w3.normal = {0, -1, 0};
-  c.planes = {floor, w0, w1, w2, w3};
-  return c;
+  return {floor, w0, w1, w2, w3};
 }
 
 double packing_fraction(const std::vector<std::array<double, 4>>& spheres, const std::array<double, 3>& lo,

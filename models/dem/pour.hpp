@@ -31,6 +31,10 @@ inline constexpr std::size_t kReleaseWall = 2;
 double repose_angle(const std::vector<std::array<double, 4>>& spheres, const PourSpec& spec,
                     std::vector<std::array<double, 2>>* profile = nullptr);
 
+// The five planes of an open box [0, lx] x [0, ly] above the floor z = 0 (normals inwards): floor,
+// x = 0, x = lx (index kReleaseWall), y = 0, y = ly.
+std::vector<PlaneInit> box_planes(double lx, double ly);
+
 // `base` (materials, contact, gravity, effects, dt) with the bin's five planes and `count` particles on
 // a lattice above the floor (spacing 2.2 radius_max, layer after layer), each of a shape drawn in turn
 // from `shapes`, a uniform random radius and a uniform random orientation. Spheres are free spheres,

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "dem/dem.hpp"
+#include "dem/pour.hpp"
 
 inline constexpr double kBox = 0.05;  // the box's side [m]
 
@@ -30,15 +31,7 @@ inline polymech::dem::Config pour_into_a_box() {
         s.position = {0.01 + 0.01 * i + jitter(rng), 0.01 + 0.01 * j + jitter(rng), 0.01 + 0.0125 * k};
         c.spheres.push_back(s);
       }
-  dm::PlaneInit floor, w0, w1, w2, w3;
-  floor.normal = {0, 0, 1};
-  w0.normal = {1, 0, 0};
-  w1.point = {box, 0, 0};
-  w1.normal = {-1, 0, 0};
-  w2.normal = {0, 1, 0};
-  w3.point = {0, box, 0};
-  w3.normal = {0, -1, 0};
-  c.planes = {floor, w0, w1, w2, w3};
+  c.planes = dm::box_planes(box, box);
   c.max_speed = 2.0;
   return c;
 }

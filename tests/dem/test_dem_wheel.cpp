@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "dem/dem.hpp"
+#include "dem/pour.hpp"
 #include "dem/wheel.hpp"
 
 namespace pm = polymech;
@@ -34,15 +35,7 @@ dm::Config wheel_on_a_layer(double speed, double load_to = 0.012) {
       s.position = {r + 2 * r * i, r + 2 * r * j, r};
       c.spheres.push_back(s);
     }
-  dm::PlaneInit floor, w0, w1, w2, w3;
-  floor.normal = {0, 0, 1};
-  w0.normal = {1, 0, 0};
-  w1.point = {lx, 0, 0};
-  w1.normal = {-1, 0, 0};
-  w2.normal = {0, 1, 0};
-  w3.point = {0, ly, 0};
-  w3.normal = {0, -1, 0};
-  c.planes = {floor, w0, w1, w2, w3};
+  c.planes = dm::box_planes(lx, ly);
   auto& w = c.wheel;
   w.radius = 0.06;
   w.width = 0.04;
