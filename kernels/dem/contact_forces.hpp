@@ -1,8 +1,8 @@
-// The contact kernels of the DEM model: sphere-sphere (over the rows of a full neighbour list), sphere
-// against analytic planes, sphere against the facets of a SurfaceMesh (inside-outside, one force per
-// touching feature). Each kernel runs over the spheres and adds to sphere i only (its acceleration and
-// angular acceleration): no atomics, and the result does not depend on the thread count. In a full
-// list a pair is met from both ends; each end keeps its own tangential spring, the mirror of the other.
+// The contact kernels of the DEM model: sphere-sphere (over a half neighbour list, each pair once, then
+// a gather to the second members over the list's transpose), sphere against analytic planes, sphere
+// against the facets of a SurfaceMesh (inside-outside, one force per touching feature). Each kernel
+// runs over the spheres and adds to one sphere per thread (its acceleration and angular acceleration):
+// no atomics, and the result does not depend on the thread count.
 //
 // History: the tangential spring xi of contact k sits in hist(k, 0..2) (contact::PairHistory::values,
 // carried across list rebuilds); it is set to zero while the pair is listed but not touching, so a new
@@ -15,6 +15,7 @@
 #include "dem/hertz_mindlin.hpp"
 #include "dem/spheres.hpp"
 #include "neighbors/neighbor_list.hpp"
+#include "neighbors/transpose.hpp"
 #include "particles/reductions.hpp"
 
 namespace polymech::dem {
@@ -48,26 +49,39 @@ KOKKOS_INLINE_FUNCTION Vec3<T> spring(const SpringView<T>& h, Offset k, bool fri
 
 }  // namespace detail
 
-// Kernel "polymech::dem::sphere_sphere": Hertz-Mindlin forces between listed spheres in contact.
+// What a sphere-sphere pair gives its second member j (half list): the force on j is -f, its torque
+// tj = -l_j (n x f) (rows: fx, fy, fz, tjx, tjy, tjz; zero for a listed pair not in contact).
 template <class T>
-void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const SpringView<T>& hist,
-                          const HertzMindlin<T>& p, bool friction, T dt) {
+using PairLoadView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
+
+// Kernels "polymech::dem::sphere_sphere" and "polymech::dem::sphere_sphere_gather": Hertz-Mindlin forces
+// between listed spheres in contact, over a half list (j > i: each pair computed once). The first
+// kernel adds each pair's force and torque to its first member i (a row is one sphere's: no atomics)
+// and writes what the second member gets to pair_load(k); the second gathers those into each j over
+// the list's transpose, in increasing k. The sums are in a fixed order: any thread count gives the
+// same bits. One tangential spring per pair, hist(k), from i's side (v_rel = i's contact point less j's).
+template <class T>
+void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const neighbors::ListTranspose& transposed,
+                          const SpringView<T>& hist, const PairLoadView<T>& pair_load, const HertzMindlin<T>& p, bool friction, T dt) {
   const bool clumped = s.body.extent(0) > 0;
   Kokkos::parallel_for(
       "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
         const int body_i = clumped ? s.body(i) : -1;
+        Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
         for (Offset k = list.begin(i); k < list.end(i); ++k) {
           const Index j = list.neighbor(k);
-          if (body_i >= 0 && s.body(j) == body_i) continue;  // two spheres of one clump
           const Vec3<T> d = xi_pos - load<3>(s.x, j);
-          const T dist = norm(d), rj = s.radius(j);
-          const T delta = ri + rj - dist;
-          if (!(delta > T(0)) || !(dist > T(0))) {
-            if (friction) store<3>(hist, k, Vec3<T>::zero());
+          const T dist2 = norm2(d), rj = s.radius(j);
+          const T reach = ri + rj;
+          if (!(dist2 < reach * reach) || !(dist2 > T(0)) || (body_i >= 0 && s.body(j) == body_i)) {  // apart, or one clump
+            if (friction && (hist(k, 0) != T(0) || hist(k, 1) != T(0) || hist(k, 2) != T(0))) store<3>(hist, k, Vec3<T>::zero());
+            for (int c = 0; c < 6; ++c) pair_load(k, c) = T(0);
             continue;
           }
+          const T dist = kx::sqrt(dist2);
+          const T delta = reach - dist;
           const Vec3<T> n = (T(1) / dist) * d;  // from j to i
           // Both ends act at one point, the middle of the overlap (levers r - delta / 2), so the pair's
           // forces and torques conserve angular momentum exactly (with the lever r each, a tangential
@@ -76,9 +90,37 @@ void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& 
           const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
           const T mj = s.mass(j);
           Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(p, ri * rj / (ri + rj), mi * mj / (mi + mj), delta, n, v_rel, friction, dt, xi);
+          const auto c = hertz_mindlin_force(p, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, dt, xi);
           if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, li, c.force);
+          const Vec3<T> nxf = cross(n, c.force);
+          f_sum += c.force;
+          t_sum -= li * nxf;
+          for (int q = 0; q < 3; ++q) {
+            pair_load(k, q) = c.force[q];
+            pair_load(k, 3 + q) = -lj * nxf[q];
+          }
+        }
+        const T inv_inertia = T(2.5) / (mi * ri * ri);
+        for (int q = 0; q < 3; ++q) {
+          s.a(i, q) += f_sum[q] / mi;
+          s.alpha(i, q) += inv_inertia * t_sum[q];
+        }
+      });
+  Kokkos::parallel_for(
+      "polymech::dem::sphere_sphere_gather", range(list.num_particles), KOKKOS_LAMBDA(const Index j) {
+        Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
+        for (Offset e = transposed.begin(j); e < transposed.end(j); ++e) {
+          const Offset k = transposed.entry(e);
+          for (int q = 0; q < 3; ++q) {
+            f_sum[q] -= pair_load(k, q);
+            t_sum[q] += pair_load(k, 3 + q);
+          }
+        }
+        const T mj = s.mass(j), rj = s.radius(j);
+        const T inv_inertia = T(2.5) / (mj * rj * rj);
+        for (int q = 0; q < 3; ++q) {
+          s.a(j, q) += f_sum[q] / mj;
+          s.alpha(j, q) += inv_inertia * t_sum[q];
         }
       });
 }

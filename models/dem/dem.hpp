@@ -73,7 +73,7 @@ class Dem {
         clumps_(c.effects.has("clumps")),
         wheel_(c.effects.has("rigid_wheel")),
         clump_init_(c.clumps.empty() ? ClumpBodies{} : expand_clumps(c)),
-        pairs_(T(2 * max_radius(c, clump_init_)), T(skin(c, clump_init_)), neighbors::ListKind::full, "polymech::dem::sphere_pairs", friction_),
+        pairs_(T(2 * max_radius(c, clump_init_)), T(skin(c, clump_init_)), neighbors::ListKind::half, "polymech::dem::sphere_pairs", friction_),
         facet_pairs_(T(0), T(skin(c, clump_init_)), neighbors::ListKind::full, "polymech::dem::facet_pairs", friction_) {
     limit_ = time_step_limit(cfg_);
     if (cfg_.dt <= 0) cfg_.dt = cfg_.dt_safety * limit_.limit;
@@ -120,7 +120,14 @@ class Dem {
   void add_contact_forces() {
     const T dt = T(cfg_.dt);
     pairs_.update(s_.x);
-    sphere_sphere_forces(s_, pairs_.list(), pairs_.history().values, pp_, friction_, dt);
+    if (transposed_at_ != pairs_.builds()) {  // a new list: its transpose and the pairs' load rows
+      neighbors::transpose(pairs_.list(), transposed_);
+      const auto np = static_cast<std::size_t>(pairs_.list().num_pairs);
+      if (pair_load_.extent(0) < np)
+        pair_load_ = PairLoadView<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::dem::pair_load")), np + np / 8 + 16);
+      transposed_at_ = pairs_.builds();
+    }
+    sphere_sphere_forces(s_, pairs_.list(), transposed_, pairs_.history().values, pair_load_, pp_, friction_, dt);
     if (planes_.extent(0) > 0) sphere_plane_forces(s_, planes_, plane_history_, pw_, friction_, dt);
     if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
@@ -209,6 +216,7 @@ class Dem {
     state_.load(a, prefix + "state/");
     step_ = a.get<std::int64_t>(prefix + "step");
     models::load_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
+    transposed_at_ = -1;
     if (surfaces_) models::load_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
     current_positions(s_);
     prepared_ = true;  // the accelerations of this state are part of it
@@ -493,6 +501,9 @@ class Dem {
   bool friction_, damping_, surfaces_, clumps_, wheel_;
   ClumpBodies clump_init_;
   Pairs pairs_, facet_pairs_;
+  neighbors::ListTranspose transposed_;  // of the half list pairs_ (built with it)
+  PairLoadView<T> pair_load_;            // per listed pair: what its second sphere gets
+  int transposed_at_ = -1;               // the pairs_.builds() the transpose is of
   ClumpSet<T> clumps_set_;
   TimeStepLimit limit_;
   HertzMindlin<T> pp_, pw_;

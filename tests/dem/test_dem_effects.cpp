@@ -54,12 +54,43 @@ TEST(DemEffects, EveryEffectLaunchesItsKernelsAndAllocatesItsState) {
   c.clumps = {k};
   dm::Dem<double> m(c);
   run_steps(m, 20);
-  for (const auto& spec : dm::effect_table())
-    for (const auto& kernel : spec.kernels) EXPECT_GE(census.launches(kernel), 1) << kernel;
+  for (const auto& spec : dm::effect_table())  // all but rigid_wheel (below): its kernels stay idle here
+    for (const auto& kernel : spec.kernels)
+      if (spec.name == "rigid_wheel")
+        EXPECT_EQ(census.launches(kernel), 0) << kernel;
+      else
+        EXPECT_GE(census.launches(kernel), 1) << kernel;
+  EXPECT_TRUE(census.allocations_containing("wheel").empty());
   EXPECT_EQ(census.launches("polymech::dem::sphere_facet"), 21);
   EXPECT_FALSE(census.allocations_containing("sphere_pairs_history").empty());
   EXPECT_FALSE(census.allocations_containing("facet_pairs_history").empty());
   EXPECT_FALSE(census.allocations_containing("clump_bodies").empty());
+}
+
+TEST(DemEffects, TheRigidWheelPlacesItsMeshAndSumsItsLoadEachStep) {
+  pm::testing::KernelCensus census;
+  auto c = scene({"friction", "damping", "fe_surfaces", "rigid_wheel"}, false);
+  auto& w = c.wheel;
+  w.radius = 0.1;
+  w.width = 0.05;
+  w.around = 32;
+  w.across = 2;
+  w.mass = 1.0;
+  w.load = 1.0;
+  w.load_to = w.speed_to = 1.0;
+  w.x_start = 0.2;
+  w.parked = {0.2, 0.0, 2.0};
+  c.surface = dm::wheel_surface(w);
+  dm::Dem<double> m(c);
+  run_steps(m, 20);
+  EXPECT_TRUE(m.wheel().placed);
+  EXPECT_EQ(census.launches("polymech::dem::wheel_reaction_sum"), 21);
+  EXPECT_EQ(census.launches("polymech::contact::place_rigid_surface"), 21);  // parked at the start, then each step
+  EXPECT_FALSE(census.allocations_containing("wheel_reaction").empty());
+  EXPECT_THROW(pm::EffectSet::resolve({"rigid_wheel"}, dm::effect_table()), pm::EffectError);  // requires fe_surfaces
+  auto no_wheel = c;
+  no_wheel.wheel = dm::WheelSpec{};
+  EXPECT_THROW(dm::Dem<double> bad(no_wheel), std::invalid_argument);
 }
 
 TEST(DemEffects, UnknownEffectAndSurfaceWithoutMeshAreErrors) {
