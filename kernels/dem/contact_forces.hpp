@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "contact/sphere_facet.hpp"
 #include "dem/hertz_mindlin.hpp"
@@ -125,29 +126,64 @@ void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& 
       });
 }
 
-// Kernel "polymech::dem::sphere_plane": every sphere against every plane (one-sided: a sphere whose
-// centre is less than r behind a plane is pushed out along its normal). hist(i * planes + q).
+// The planes near each sphere, a bit per plane (at most max_planes): a Verlet list for the planes,
+// rebuilt with the sphere list. An empty mask View: every plane is near every sphere.
+using PlaneMask = Kokkos::View<std::uint32_t*, MemSpace>;
+inline constexpr int max_planes = 32;
+
+// Kernel "polymech::dem::near_planes": bit q of mask(i) is set when sphere i is within r_i + reach of
+// plane q's front (-r_i - reach < d < r_i + reach): with reach = the Verlet skin, no sphere can touch a
+// plane whose bit is clear before the next rebuild (a rebuild comes when a sphere has moved skin / 2).
+// The springs of the planes whose bit is clear are zeroed (a contact that starts later starts unloaded).
 template <class T>
-void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, const SpringView<T>& hist,
-                         const HertzMindlin<T>& p, bool friction, T dt) {
+void near_planes(const SphereSet<T>& s, const PlaneView<T>& planes, T reach, const PlaneMask& mask, const SpringView<T>& hist, bool friction) {
   const Index np = static_cast<Index>(planes.extent(0));
   Kokkos::parallel_for(
-      "polymech::dem::sphere_plane", range(s.size()), KOKKOS_LAMBDA(const Index i) {
-        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
-        const T ri = s.radius(i), mi = s.mass(i);
+      "polymech::dem::near_planes", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        const Vec3<T> x = load<3>(s.x, i);
+        const T r = s.radius(i) + reach;
+        std::uint32_t bits = 0;
         for (Index q = 0; q < np; ++q) {
+          const Vec3<T> point{{planes(q, 0), planes(q, 1), planes(q, 2)}};
+          const Vec3<T> n{{planes(q, 3), planes(q, 4), planes(q, 5)}};
+          const T d = dot(x - point, n);
+          if (d < r && d > -r)
+            bits |= std::uint32_t(1) << q;
+          else if (friction)
+            store<3>(hist, static_cast<Offset>(i) * np + q, Vec3<T>::zero());
+        }
+        mask(i) = bits;
+      });
+}
+
+// Kernel "polymech::dem::sphere_plane": every sphere against the planes near it (`near`, near_planes;
+// empty: all planes), one-sided: a sphere whose centre is less than r behind a plane is pushed out
+// along its normal. hist(i * planes + q).
+template <class T>
+void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, const SpringView<T>& hist,
+                         const HertzMindlin<T>& p, bool friction, T dt, const PlaneMask& near = PlaneMask()) {
+  const Index np = static_cast<Index>(planes.extent(0));
+  const bool all = near.extent(0) == 0;
+  Kokkos::parallel_for(
+      "polymech::dem::sphere_plane", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        std::uint32_t bits = all ? ~std::uint32_t(0) : near(i);
+        if (bits == 0) return;
+        const Vec3<T> xi_pos = load<3>(s.x, i);
+        const T ri = s.radius(i);
+        for (Index q = 0; q < np; ++q) {
+          if (!((bits >> q) & 1u)) continue;
           const Offset k = static_cast<Offset>(i) * np + q;
           const Vec3<T> point{{planes(q, 0), planes(q, 1), planes(q, 2)}};
           const Vec3<T> n{{planes(q, 3), planes(q, 4), planes(q, 5)}};
           const T d = dot(xi_pos - point, n);
           const T delta = ri - d;
-          if (!(delta > T(0)) || !(d > -ri)) {
-            if (friction) store<3>(hist, k, Vec3<T>::zero());
+          if (!(delta > T(0)) || !(d > -ri)) {  // apart: a spring is dropped (read first: most are zero already)
+            if (friction && (hist(k, 0) != T(0) || hist(k, 1) != T(0) || hist(k, 2) != T(0))) store<3>(hist, k, Vec3<T>::zero());
             continue;
           }
-          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n);
+          const Vec3<T> v_rel = load<3>(s.v, i) + cross(load<3>(s.omega, i), (-ri) * n);
           Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(p, ri, mi, delta, n, v_rel, friction, dt, xi);  // R* = r, m* = m
+          const auto c = hertz_mindlin_force(p, ri, s.mass(i), delta, n, v_rel, friction, dt, xi);  // R* = r, m* = m
           if (friction) store<3>(hist, k, xi);
           detail::add_contact(s, i, n, ri, ri, c.force);
         }

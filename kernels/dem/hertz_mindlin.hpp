@@ -81,7 +81,7 @@ struct ContactForce {
 // The force on sphere i of one contact (eqs. (11)-(14)); updates the tangential spring xi when
 // `friction` (with the step dt). r_star, m_star: of this pair.
 template <class T>
-KOKKOS_INLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T r_star, T m_star, T delta,
+KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T r_star, T m_star, T delta,
                                                            const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
                                                            T dt, Vec3<T>& xi) {
   ContactForce<T> out;

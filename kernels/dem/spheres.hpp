@@ -64,4 +64,45 @@ void kick_rotation(const SphereSet<T>& s, T h) {
       });
 }
 
+// The DEM step's integrator passes, fused (one pass over the spheres each, the same arithmetic as
+// particles::kick / drift and kick_rotation):
+// kernel "polymech::dem::kick_drift": v += h a, omega += h alpha, u += dt v (velocity Verlet's first half);
+template <class T>
+void kick_drift(const SphereSet<T>& s, T h, T dt) {
+  const auto u = s.u, v = s.v, a = s.a, omega = s.omega, alpha = s.alpha;
+  Kokkos::parallel_for(
+      "polymech::dem::kick_drift", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) {
+          v(i, k) += h * a(i, k);
+          omega(i, k) += h * alpha(i, k);
+          u(i, k) += dt * v(i, k);
+        }
+      });
+}
+// kernel "polymech::dem::kick": v += h a, omega += h alpha (its second half);
+template <class T>
+void kick(const SphereSet<T>& s, T h) {
+  const auto v = s.v, a = s.a, omega = s.omega, alpha = s.alpha;
+  Kokkos::parallel_for(
+      "polymech::dem::kick", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) {
+          v(i, k) += h * a(i, k);
+          omega(i, k) += h * alpha(i, k);
+        }
+      });
+}
+// kernel "polymech::dem::start_forces": x = x0 + u, a = g, alpha = 0 (current_positions + body_forces).
+template <class T>
+void start_forces(const SphereSet<T>& s, const Vec3<T>& g) {
+  const auto x = s.x, x0 = s.x0, u = s.u, a = s.a, alpha = s.alpha;
+  Kokkos::parallel_for(
+      "polymech::dem::start_forces", range(s.size()), KOKKOS_LAMBDA(const Index i) {
+        for (int k = 0; k < 3; ++k) {
+          x(i, k) = x0(i, k) + u(i, k);
+          a(i, k) = g[k];
+          alpha(i, k) = T(0);
+        }
+      });
+}
+
 }  // namespace polymech::dem

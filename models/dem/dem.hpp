@@ -7,7 +7,7 @@
 //   models::run(model, steps);
 //
 // One step (models/common/explicit_model.hpp), velocity Verlet on translation and spin:
-//   kick (v, omega) -> drift -> x = x0 + u, a = g -> broad phase (Verlet skin, history carried)
+//   kick (v, omega) + drift -> x = x0 + u, a = g -> broad phase (Verlet skin, history carried)
 //   -> sphere_sphere -> sphere_plane -> [sphere_facet] -> kick.
 // Effects: `friction` (the tangential spring, its history), `damping` (restitution < 1), `fe_surfaces`,
 // `clumps`, `rigid_wheel` (the surface is a wheel, dem/wheel.hpp: set on the bed at WheelSpec::start,
@@ -103,9 +103,7 @@ class Dem {
   void advance_first_half() {
     if (wheel_) wheel_first_half();
     const T dt = T(cfg_.dt);
-    particles::kick<T, 3>(s_, T(0.5) * dt);
-    kick_rotation(s_, T(0.5) * dt);
-    particles::drift<T, 3>(s_, dt);
+    kick_drift(s_, T(0.5) * dt, dt);
     if (clumps_) {  // the members' own kick and drift above are overwritten by their clump's motion
       clump_kick(clumps_set_, 0.5 * cfg_.dt);
       clump_drift(clumps_set_, cfg_.dt);
@@ -113,8 +111,7 @@ class Dem {
     }
   }
   void compute_forces() {
-    current_positions(s_);
-    body_forces(s_, gravity());
+    start_forces(s_, gravity());
   }
   void observe() {}
   void add_contact_forces() {
@@ -128,7 +125,13 @@ class Dem {
       transposed_at_ = pairs_.builds();
     }
     sphere_sphere_forces(s_, pairs_.list(), transposed_, pairs_.history().values, pair_load_, pp_, friction_, dt);
-    if (planes_.extent(0) > 0) sphere_plane_forces(s_, planes_, plane_history_, pw_, friction_, dt);
+    if (planes_.extent(0) > 0) {
+      if (planes_at_ != pairs_.builds()) {  // the planes' Verlet mask, with the sphere list
+        near_planes(s_, planes_, T(skin(cfg_, clump_init_)), near_planes_, plane_history_, friction_);
+        planes_at_ = pairs_.builds();
+      }
+      sphere_plane_forces(s_, planes_, plane_history_, pw_, friction_, dt, near_planes_);
+    }
     if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt,
@@ -143,8 +146,7 @@ class Dem {
       b.velocity[2] += 0.5 * cfg_.dt * b.force[2] / b.mass;
     }
     const T h = T(0.5) * T(cfg_.dt);
-    particles::kick<T, 3>(s_, h);
-    kick_rotation(s_, h);
+    kick(s_, h);
     if (clumps_) {
       clump_kick(clumps_set_, 0.5 * cfg_.dt);
       clump_members(s_, clumps_set_, false);
@@ -167,6 +169,7 @@ class Dem {
     auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), planes_);
     for (int k = 0; k < 3; ++k) h(q, k) = T(point[k]);
     Kokkos::deep_copy(planes_, h);
+    planes_at_ = -1;  // the near-plane mask is stale
   }
   // Spheres: the free ones (Config::spheres) first, then the clumps' members in clump order.
   Index sphere_count() const { return s_.size(); }
@@ -217,6 +220,7 @@ class Dem {
     step_ = a.get<std::int64_t>(prefix + "step");
     models::load_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
     transposed_at_ = -1;
+    planes_at_ = -1;
     if (surfaces_) models::load_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
     current_positions(s_);
     prepared_ = true;  // the accelerations of this state are part of it
@@ -377,6 +381,10 @@ class Dem {
   }
   void allocate_planes() {
     if (cfg_.planes.empty()) return;
+    if (cfg_.planes.size() > static_cast<std::size_t>(max_planes))
+      throw std::invalid_argument("dem: " + std::to_string(cfg_.planes.size()) + " planes; at most " + std::to_string(max_planes) +
+                                  " (a larger boundary is an FE surface: effect fe_surfaces)");
+    near_planes_ = PlaneMask("polymech::dem::near_planes", static_cast<std::size_t>(s_.size()));
     planes_ = PlaneView<T>("polymech::dem::planes", cfg_.planes.size());
     auto h = Kokkos::create_mirror_view(planes_);
     for (std::size_t q = 0; q < cfg_.planes.size(); ++q) {
@@ -504,6 +512,8 @@ class Dem {
   neighbors::ListTranspose transposed_;  // of the half list pairs_ (built with it)
   PairLoadView<T> pair_load_;            // per listed pair: what its second sphere gets
   int transposed_at_ = -1;               // the pairs_.builds() the transpose is of
+  PlaneMask near_planes_;                // per sphere: the planes within reach (near_planes)
+  int planes_at_ = -1;                   // the pairs_.builds() the mask is of
   ClumpSet<T> clumps_set_;
   TimeStepLimit limit_;
   HertzMindlin<T> pp_, pw_;

@@ -39,7 +39,8 @@ TEST(DemEffects, NoEffectsLaunchesOnlyTheBaseKernelsAndAllocatesNoHistory) {
   EXPECT_EQ(census.launches("polymech::contact::facet_geometry"), 0);
   EXPECT_EQ(census.launches("polymech::dem::sphere_sphere"), 21);  // 20 steps + the initial forces
   EXPECT_EQ(census.launches("polymech::dem::sphere_plane"), 21);
-  EXPECT_EQ(census.launches("polymech::dem::kick_rotation"), 40);
+  EXPECT_EQ(census.launches("polymech::dem::kick_drift"), 20);
+  EXPECT_EQ(census.launches("polymech::dem::kick"), 20);
 }
 
 TEST(DemEffects, EveryEffectLaunchesItsKernelsAndAllocatesItsState) {
