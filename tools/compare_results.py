@@ -17,7 +17,9 @@ import sys
 
 # summary keys that measure the machine, not the physics
 TIMING_KEYS = {"wall_seconds", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
-               "scene"}
+               "scene",
+               # the EFG app's timings
+               "assembly_seconds", "shape_seconds", "factor_seconds", "solve_seconds", "step_seconds_per_step", "j_seconds"}
 
 
 def rel(a, b):

@@ -1,11 +1,15 @@
 // Element-free Galerkin cracked plates (seed 004, Hagihara et al.), static stage: an edge or centre crack
 // in tension (a scene of scenes/efg/), solved with MLS shape functions; the J-integral on circles
-// around the tip gives K_I, compared with the Tada, Paris & Irwin handbook value.
+// around the tip gives K_I, compared with the Tada, Paris & Irwin handbook value. A scene with
+// [dynamic] runs the stationary or running crack under a step load through models::run.
 //   efg [--scene scenes/efg/edge_crack_static.toml] [--out out/efg] [--accuracy draft|standard|paper]
-// Writes summary.json (nodes, gauss_points, handbook_factor, sif_static [[radius_m, K/(s sqrt(pi a))], ...],
+//       [--steps N] [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]   (the last four: dynamic)
+// Static: writes summary.json (nodes, gauss_points, handbook_factor, sif_static [[radius_m, K/(s sqrt(pi a))], ...],
 // sif_error (mean over the paths), j_path_spread, crack_opening (at the crack centre or mouth), timings,
 // shape_function_evaluations_per_second, wall_seconds), j_paths.csv and a snapshot efg.xdmf/.h5 of
-// the displacement at the nodes.
+// the displacement at the nodes. Dynamic: summary.json (sif_stationary or sif_running, crack_opening,
+// sif_peak, energy_error, run record) and sif_history.csv; checkpoints and --restart as in
+// apps/common/restart.hpp.
 #include <algorithm>
 #include <cstdint>
 #include <chrono>
@@ -16,6 +20,7 @@
 #include <vector>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "efg/efg.hpp"
 #include "io/efg_scene.hpp"
 
@@ -23,68 +28,88 @@ namespace pm = polymech;
 
 namespace {
 
-// The stationary crack under a Heaviside step (seed 004 §3.2): Newmark steps, J' on every path every
-// output_every steps, the crack opening at the centre; energy balance of the average-acceleration rule.
-int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, const pm::apps::CommonOptions& opt, nlohmann::json& j,
-                std::chrono::steady_clock::time_point t0) {
+// The stationary or running crack under a Heaviside step (seed 004 §3.2, §3.3) through the shared run
+// driver (models::run: checkpoints, --restart, watchdog): Newmark steps, J' on every path and the crack
+// opening at the centre every output_every steps; energy balance of the average-acceleration rule.
+int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, pm::apps::CommonOptions opt,
+                const pm::apps::RestartOptions& ropt, nlohmann::json& j) {
   const auto& c = scene.config;
+  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.duration / scene.dt - 1e-9));
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("efg", scene.header, steps));
+  pm::io::make_output_dir(opt.out);
   model.assemble();
   model.start_dynamic(scene.dt);
-  const auto steps = static_cast<std::int64_t>(std::ceil(scene.duration / scene.dt - 1e-9));
-  std::vector<double> ts, cods, mean_f, energy;
-  std::vector<std::vector<double>> per_path(c.j_radii.size());
+  model.set_prescribed_growth(true);
+  // the samples: time [us], mean K factor, crack opening, energy balance, load work, J' path spread,
+  // then K factor on each path
+  const std::size_t paths = c.j_radii.size();
+  std::vector<std::vector<double>> series(6 + paths);
+  double j_seconds = 0.0;
+  auto sample = [&](std::int64_t) {
+    const auto tj = std::chrono::steady_clock::now();
+    double lo = 1e300, hi = -1e300, sum = 0.0;
+    for (std::size_t p = 0; p < paths; ++p) {
+      const auto r = model.dynamic_j(c.j_radii[p], scene.domain_cells);
+      series[6 + p].push_back(r.factor);
+      sum += r.factor;
+      lo = std::min(lo, r.j);
+      hi = std::max(hi, r.j);
+    }
+    j_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tj).count();
+    const double f = sum / static_cast<double>(paths);
+    const double t_us = model.time() * 1e6;
+    const double cod = model.dynamic_opening_at(0.0);
+    const double spread = hi > 0 ? (hi - lo) / hi : 0.0;
+    series[0].push_back(t_us);
+    series[1].push_back(f);
+    series[2].push_back(cod);
+    series[3].push_back(model.kinetic_energy() + model.strain_energy() - model.load_work());
+    series[4].push_back(model.load_work());
+    series[5].push_back(spread);
+    if (!opt.quiet)
+      std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, 1e3 * model.crack_length(), f,
+                  100 * spread, cod);
+  };
+  pm::models::RunHooks hooks;
+  hooks.sample_every = scene.output_every;
+  hooks.sample_at_start = true;
+  hooks.sample = sample;
+  checkpoints.attach(hooks, [&](pm::models::Archive& a) {
+    a.put_columns("efg/series", series);
+    a.put("efg/j_seconds", j_seconds);
+  }, opt.quiet);
+  if (hooks.resume) {
+    series = hooks.resume->get_columns<double>("efg/series");
+    if (series.size() != 6 + paths) throw std::invalid_argument("checkpoint: efg/series has the wrong number of columns");
+    j_seconds = hooks.resume->get<double>("efg/j_seconds");
+  }
+  const auto stats = pm::models::run(model, steps - checkpoints.resume_step(), hooks);
+  if (stats.diverged)
+    std::fprintf(stderr, "[efg] the run diverged at step %lld: %s\n", static_cast<long long>(stats.bad_step), stats.reason.c_str());
+
   nlohmann::json sif = nlohmann::json::array(), opening = nlohmann::json::array();
   double worst_energy = 0.0, max_work = 0.0, peak = -1.0, peak_spread = 0.0, peak_t = 0.0;
-  double j_seconds = 0.0;
-  for (std::int64_t s = 0; s <= steps; ++s) {
-    if (s % scene.output_every == 0 || s == steps) {
-      const auto tj = std::chrono::steady_clock::now();
-      double lo = 1e300, hi = -1e300, sum = 0.0;
-      for (std::size_t p = 0; p < c.j_radii.size(); ++p) {
-        const auto r = model.dynamic_j(c.j_radii[p], scene.domain_cells);
-        per_path[p].push_back(r.factor);
-        sum += r.factor;
-        lo = std::min(lo, r.j);
-        hi = std::max(hi, r.j);
-      }
-      j_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tj).count();
-      const double f = sum / static_cast<double>(c.j_radii.size());
-      const double t_us = model.time() * 1e6;
-      const double cod = model.dynamic_opening_at(0.0);
-      const double e = model.kinetic_energy() + model.strain_energy() - model.load_work();
-      max_work = std::max(max_work, std::abs(model.load_work()));
-      worst_energy = std::max(worst_energy, std::abs(e));
-      ts.push_back(t_us);
-      cods.push_back(cod);
-      mean_f.push_back(f);
-      energy.push_back(e);
-      sif.push_back({t_us, f});
-      opening.push_back({t_us, cod});
-      if (f > peak) {
-        peak = f;
-        peak_t = t_us;
-        peak_spread = hi > 0 ? (hi - lo) / hi : 0.0;
-      }
-      if (!opt.quiet)
-        std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, 1e3 * model.crack_length(), f,
-                    hi > 0 ? 100 * (hi - lo) / hi : 0.0, cod);
-    }
-    if (s < steps) {
-      if (c.growth_speed > 0 && model.time() >= c.growth_start - 1e-3 * scene.dt) {
-        const double a = std::min(c.final_crack_length, c.crack_length + c.growth_speed * (model.time() - c.growth_start));
-        if (a > model.crack_length()) model.set_crack_length(a, a < c.final_crack_length ? c.growth_speed : 0.0);
-      }
-      model.step();
+  for (std::size_t i = 0; i < series[0].size(); ++i) {
+    const double t_us = series[0][i], f = series[1][i];
+    sif.push_back({t_us, f});
+    opening.push_back({t_us, series[2][i]});
+    worst_energy = std::max(worst_energy, std::abs(series[3][i]));
+    max_work = std::max(max_work, std::abs(series[4][i]));
+    if (f > peak) {
+      peak = f;
+      peak_t = t_us;
+      peak_spread = series[5][i];
     }
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = stats.wall_seconds;
   const auto& t = model.timings();
   j["mode"] = "dynamic";
+  pm::apps::put_run_record(j, stats);
   j["nodes"] = model.nodes();
   j["gauss_points"] = model.layout().quad_count();
   j["state"] = c.plane_strain ? "plane_strain" : "plane_stress";
   j["dt"] = scene.dt;
-  j["steps"] = steps;
+  j["steps"] = stats.steps;
   j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = sif;
   if (c.growth_speed > 0) {
     j["growth_speed"] = c.growth_speed;
@@ -97,26 +122,29 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, cons
   j["j_path_spread"] = peak_spread;
   j["j_radii"] = c.j_radii;
   j["energy_error"] = max_work > 0 ? worst_energy / max_work : 0.0;
+  // timings of this process (a resumed run: since its restart)
   j["assembly_seconds"] = t.assembly_seconds;
   j["shape_seconds"] = t.shape_seconds;
   j["factor_seconds"] = t.factor_seconds;
-  j["step_seconds_per_step"] = steps > 0 ? t.step_seconds / static_cast<double>(steps) : 0.0;
+  const auto done = stats.steps - checkpoints.resume_step();
+  j["step_seconds_per_step"] = done > 0 ? t.step_seconds / static_cast<double>(done) : 0.0;
   j["j_seconds"] = j_seconds;
   j["wall_seconds"] = wall;
   pm::io::write_json(opt.out / "summary.json", j);
   std::vector<std::string> header{"t_us", "K_factor_mean", "crack_opening_m", "energy_balance_J"};
-  pm::io::Columns cols{ts, mean_f, cods, energy};
-  for (std::size_t p = 0; p < per_path.size(); ++p) {
+  pm::io::Columns cols{series[0], series[1], series[2], series[3]};
+  for (std::size_t p = 0; p < paths; ++p) {
     char name[64];
     std::snprintf(name, sizeof name, "K_factor_r%.3gmm", c.j_radii[p] * 1e3);
     header.push_back(name);
-    cols.push_back(per_path[p]);
+    cols.push_back(series[6 + p]);
   }
   pm::io::write_csv(opt.out / "sif_history.csv", header, cols);
+  checkpoints.finished();
   std::printf("efg: %d nodes, %lld steps, peak K/(s sqrt(pi a)) = %.4f at %.2f us (J' path spread %.2f %%), energy error %.2e, %.2f s; results in %s\n",
-              model.nodes(), static_cast<long long>(steps), peak, peak_t, 100 * peak_spread, max_work > 0 ? worst_energy / max_work : 0.0, wall,
+              model.nodes(), static_cast<long long>(stats.steps), peak, peak_t, 100 * peak_spread, max_work > 0 ? worst_energy / max_work : 0.0, wall,
               opt.out.c_str());
-  return 0;
+  return stats.diverged ? 1 : 0;
 }
 
 }  // namespace
@@ -125,17 +153,21 @@ int main(int argc, char** argv) {
   CLI::App app{"Element-free Galerkin cracked plate: static K_I from the J-integral against the handbook (seed 004)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/efg/edge_crack_static.toml", "out/efg");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("efg", [&] {
     const auto scene = pm::io::load_efg_scene(opt.scene, opt.precision, opt.accuracy);
     if (pm::apps::announce_cost("efg", scene.header, scene.cost, opt)) return 0;
+    if (!scene.dynamic && !ropt.restart.empty())
+      throw std::invalid_argument("--restart: " + opt.scene.string() + " is a static scene (one solve: nothing to resume)");
     pm::apps::KokkosSession kokkos(opt.threads);
-    pm::io::make_output_dir(opt.out);
     const auto t0 = std::chrono::steady_clock::now();
     pm::efg::Efg<double> model(scene.config);
     const auto& c = scene.config;
     nlohmann::json j = pm::apps::summary_header("efg", scene.header);
-    if (scene.dynamic) return run_dynamic(scene, model, opt, j, t0);
+    if (scene.dynamic) return run_dynamic(scene, model, opt, ropt, j);
+    pm::io::make_output_dir(opt.out);
     model.solve_static();
     std::vector<double> radii, js, ks, fs, errs;
     nlohmann::json sif = nlohmann::json::array();

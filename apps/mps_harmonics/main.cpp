@@ -1,15 +1,19 @@
 // Seed 000 §5.2: higher harmonics from a closed crack in steel. Runs the scene twice, without and with
 // the crack, and compares the spectra of the transmitted wave at the harmonics probe (Figs. 7-10).
 //   mps_harmonics --scene scenes/mps/crack_p_wave.toml [--out out/crack_p_wave] [--accuracy draft|standard|paper]
+//                 [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]
 // The run without the crack also records the largest shear force through the crack line; a scene with
 // [crack].normal_reaction_ratio sets the slip model's fixed normal reaction from it (§5.2.2: 0.75 x).
 // Writes time_history.csv, spectrum.csv, contact_states.csv, summary.json, fields.h5/.xdmf (cracked run).
+// Checkpoints and --restart as in apps/common/restart.hpp: a restart continues inside whichever of the
+// two runs was going (the cracked run's checkpoints carry the intact run's record).
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "analysis/spectrum.hpp"
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/progress.hpp"
 #include "mps_elastic/harmonics.hpp"
@@ -20,8 +24,12 @@ namespace me = polymech::mps_elastic;
 namespace {
 
 template <class T>
-int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
+int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt) {
   const me::Config& c = scene.config;
+  char extra[64];
+  std::snprintf(extra, sizeof extra, "k_prime=%.17g", c.crack.k_prime);
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("mps_harmonics", scene.header, c.steps, extra));
+  const std::string phase = me::harmonics_phase(checkpoints.resume());
   pm::io::make_output_dir(opt.out);
 
   pm::io::SnapshotMesh mesh;
@@ -44,6 +52,19 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
     progress = std::make_unique<pm::io::Progress>("mps_harmonics " + label, c.steps, c.dt, !opt.quiet);
     me::RunHooks hooks;
     hooks.after_step = [p = progress.get()](std::int64_t k) { p->update(k); };
+    // the snapshot writer holds the cracked run's fields: its record goes into that run's checkpoints
+    checkpoints.attach(hooks, [&snapshots, crack = label == "crack"](pm::models::Archive& a) {
+      if (crack) snapshots.save(a);
+    }, opt.quiet);
+    // the store keeps (and resumes) the highest-numbered checkpoints: the cracked run's are numbered
+    // after the intact run's steps
+    const std::int64_t offset = label == "crack" ? c.steps : 0;
+    if (offset > 0)
+      hooks.checkpoint.write = [write = hooks.checkpoint.write, offset](std::int64_t k, pm::models::Archive& a) { write(offset + k, a); };
+    if (label == phase) {
+      progress->resume_at(checkpoints.resume_step() - offset);
+      if (label == "crack") snapshots.resume(*checkpoints.resume());
+    }
     if (label == "crack" && scene.snapshot_every > 0) {
       hooks.snapshot_every = scene.snapshot_every;
       hooks.snapshot = [&model, &snapshots, dt = c.dt](std::int64_t step) {
@@ -55,7 +76,8 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
     return hooks;
   };
   const int field = scene.harmonics_component == "u1" ? pm::mps::probe_u1 : pm::mps::probe_u3;
-  const auto res = me::run_harmonics_case<T>(c, scene.harmonics_probe, field, scene.normal_reaction_ratio, make_hooks);
+  const auto res = me::run_harmonics_case<T>(c, scene.harmonics_probe, field, scene.normal_reaction_ratio, make_hooks,
+                                            checkpoints.resume());
   if (progress) progress->done(c.steps);
   const auto& a = res.intact;
   const auto& b = res.crack;
@@ -139,12 +161,14 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["wall_seconds_intact"] = a.stats.wall_seconds;
   j["wall_seconds_crack"] = b.stats.wall_seconds;
   j["wall_seconds"] = a.stats.wall_seconds + b.stats.wall_seconds;
+  j["restarts"] = a.stats.restarts + b.stats.restarts;
   std::vector<std::string> files = {"summary.json", "time_history.csv", "spectrum.csv", "probes_crack.csv",
                                     "probes_intact.csv"};
   if (!b.contact.times.empty()) files.push_back("contact_states.csv");
   if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
   j["files"] = files;
   pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
 
   std::printf("harmonics of %s at probe %s (A_n / A_1, n = 1..5):\n", comp.c_str(), scene.harmonics_probe.c_str());
   std::printf("  crack : %.3g %.3g %.3g %.3g %.3g\n", rb[0], rb[1], rb[2], rb[3], rb[4]);
@@ -165,6 +189,8 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/mps/crack_p_wave.toml", "out/mps_harmonics");
   double k_prime = 0.0;
   app.add_option("--k-prime", k_prime, "override the contact stiffness factor k' of eq. (19)")->check(CLI::Range(1e-6, 1.999));
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("mps_harmonics", [&] {
     pm::apps::KokkosSession kokkos(opt.threads);
@@ -179,6 +205,6 @@ int main(int argc, char** argv) {
       throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
     if (pm::apps::announce_cost("mps_harmonics", scene.header, scene.cost, opt)) return 0;
-    return scene.header.precision == "float" ? run_case<float>(scene, opt) : run_case<double>(scene, opt);
+    return scene.header.precision == "float" ? run_case<float>(scene, opt, ropt) : run_case<double>(scene, opt, ropt);
   });
 }

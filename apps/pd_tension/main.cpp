@@ -2,12 +2,16 @@
 // by dynamic relaxation) on the scene's layout, or, with --identify-omega-v, the oscillation frequency
 // omega_v of eq. (3) from the same pull without damping or control (as the report identified it).
 //   pd_tension [--scene scenes/pd/tension_conforming.toml] [--out out/pd_tension] [--identify-omega-v]
-// Writes summary.json (modulus, reference, relative_error or omega_v, particles, bonds, wall_seconds)
-// and fields.h5 + fields.xdmf (displacement at the end).
+//              [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]
+// Writes summary.json (modulus, reference, relative_error or omega_v, particles, bonds, wall_seconds,
+// run record) and fields.h5 + fields.xdmf (displacement at the end). The modulus run goes through the
+// shared run driver: checkpoints and --restart as in apps/common/restart.hpp (not --identify-omega-v).
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "nosb_pd/tension.hpp"
 
@@ -17,9 +21,19 @@ namespace np = polymech::nosb_pd;
 namespace {
 
 template <class T, int D>
-int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool identify) {
+int run_case(pm::io::NosbPdScene scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt, bool identify,
+             double horizon_ratio) {
   np::Config& c = scene.config;
+  if (identify && !ropt.restart.empty())
+    throw std::invalid_argument("--restart: the --identify-omega-v run has no checkpoints (it takes seconds); run it again");
+  std::optional<pm::apps::Checkpoints> checkpoints;
+  if (!identify) {
+    char extra[64];
+    std::snprintf(extra, sizeof extra, "horizon_ratio=%.17g", horizon_ratio);
+    checkpoints.emplace(opt, ropt, pm::apps::run_key("pd_tension", scene.header, opt.steps, extra));
+  }
   pm::io::make_output_dir(opt.out);
+  bool diverged = false;
   if (identify) {
     c = np::omega_v_identification(c);
     scene.header.effects = c.effects;  // what ran
@@ -43,7 +57,13 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
     std::printf("omega_v = %.4g rad/s (%lld zero crossings of v - vbar over %.3g s; omega_v h / c_p = %.3f)\n", r.omega,
                 static_cast<long long>(r.crossings), r.duration, r.omega * c.spacing / c.material.p_wave_speed());
   } else {
-    const auto r = np::run_tension(model, scene.tension);
+    pm::models::RunHooks hooks;
+    checkpoints->attach(hooks, nullptr, opt.quiet);
+    const auto r = np::run_tension(model, scene.tension, hooks);
+    diverged = r.run.diverged;
+    if (r.run.diverged)
+      std::fprintf(stderr, "[pd_tension] the run diverged at step %lld: %s\n", static_cast<long long>(r.run.bad_step), r.run.reason.c_str());
+    pm::apps::put_run_record(j, r.run);
     j["modulus"] = r.modulus;
     j["reference"] = r.reference;
     j["relative_error"] = r.relative_error;
@@ -63,8 +83,9 @@ int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, bool
   const auto xdmf = snapshots.finish();
   j["files"] = {"summary.json", "fields.h5", xdmf.filename().string()};
   pm::io::write_json(opt.out / "summary.json", j);
+  if (checkpoints) checkpoints->finished();
   std::printf("results in %s\n", opt.out.c_str());
-  return 0;
+  return diverged ? 1 : 0;
 }
 
 }  // namespace
@@ -77,6 +98,8 @@ int main(int argc, char** argv) {
   double m = 0;
   app.add_flag("--identify-omega-v", identify, "measure omega_v of eq. (3) from the undamped pull without control");
   app.add_option("--horizon-ratio", m, "m = delta / spacing (default: the scene's)")->check(CLI::Range(1.0, 10.0));
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("pd_tension", [&] {
     pm::apps::KokkosSession kokkos(opt.threads);
@@ -89,7 +112,7 @@ int main(int argc, char** argv) {
       throw pm::io::SceneError(opt.scene.string() + ": loading.kind must be \"tension\" for pd_tension");
     if (pm::apps::announce_cost("pd_tension", scene.header, scene.cost, opt)) return 0;
     const bool f = scene.header.precision == "float";
-    if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, identify) : run_case<double, 2>(scene, opt, identify);
-    return f ? run_case<float, 3>(scene, opt, identify) : run_case<double, 3>(scene, opt, identify);
+    if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, ropt, identify, m) : run_case<double, 2>(scene, opt, ropt, identify, m);
+    return f ? run_case<float, 3>(scene, opt, ropt, identify, m) : run_case<double, 3>(scene, opt, ropt, identify, m);
   });
 }

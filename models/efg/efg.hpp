@@ -22,6 +22,8 @@
 #include <vector>
 
 #include "common/archive.hpp"
+#include "common/run.hpp"
+#include "common/state.hpp"
 #include "core/types.hpp"
 #include "efg/config.hpp"
 #include "efg/setup.hpp"
@@ -360,6 +362,7 @@ class Efg {
   // the residual of the previous step); then da, dv from Newmark's relations. The load is constant
   // after t = 0 (df = 0).
   void step() {
+    if (prescribed_growth_) grow_crack();
     const auto t0 = std::chrono::steady_clock::now();
     const double b = beta_, dt = dt_;
     const Eigen::VectorXd r = f_ - K_ * ud_ - M_ * ad_;
@@ -375,8 +378,41 @@ class Efg {
     sync_dynamic();
   }
 
-  // Checkpoint of a dynamic run (models::run's protocol): the nodal coefficients of u, v, a, the time and
-  // the step; the matrices are rebuilt from the configuration and the factorisation from dt on load.
+  // The prescribed growth of seed 004 §3.3 (config growth_start, growth_speed, final_crack_length): from
+  // growth_start both tips run at growth_speed up to final_crack_length. grow_crack() moves them to where
+  // they are at the current time (nothing before growth_start or once there); with
+  // set_prescribed_growth(true) every step() does it first (the runs of models::run).
+  void grow_crack() {
+    const auto& c = config_;
+    if (!(c.growth_speed > 0) || time_ < c.growth_start - 1e-3 * dt_) return;
+    const double a = std::min(c.final_crack_length, initial_a_ + c.growth_speed * (time_ - c.growth_start));
+    if (a > c.crack_length) set_crack_length(a, a < c.final_crack_length ? c.growth_speed : 0.0);
+  }
+  void set_prescribed_growth(bool on) { prescribed_growth_ = on; }
+
+  // models::run's protocol: a 2D model whose state is the nodal coefficients (host vectors: no Views to
+  // register for the watchdog's last good copy); health: the first coefficient of u or v not finite.
+  static constexpr int dimension = 2;
+  void prepare() {}
+  const models::StateRegistry& state() const { return no_views_; }
+  void set_step_index(std::int64_t k) { step_ = k; }
+  models::Health health() const {
+    models::Health h;
+    h.what = "DoF";
+    for (const Eigen::VectorXd* x : {&ud_, &vd_})
+      for (Eigen::Index i = 0; i < x->size(); ++i)
+        if (!std::isfinite((*x)(i))) {
+          h.finite = false;
+          h.first_bad = static_cast<std::int64_t>(i);
+          h.problem = std::string(x == &ud_ ? "(displacement coefficient)" : "(velocity coefficient)") + " is not finite";
+          return h;
+        }
+    return h;
+  }
+
+  // Checkpoint of a dynamic run (models::run's protocol): the nodal coefficients of u, v, a, the time,
+  // the step and the crack (half-)length and tip speed; the matrices are rebuilt from the configuration
+  // and that crack, the factorisation from dt on load.
   void save(models::Archive& ar, const std::string& prefix) const {
     auto vec = [](const Eigen::VectorXd& x) { return std::vector<double>(x.data(), x.data() + x.size()); };
     ar.put_vector(prefix + "u", vec(ud_));
@@ -385,10 +421,15 @@ class Efg {
     ar.put(prefix + "time", time_);
     ar.put(prefix + "dt", dt_);
     ar.put(prefix + "step", step_);
+    ar.put(prefix + "crack_length", config_.crack_length);
+    ar.put(prefix + "tip_speed", speed_);
   }
   void load(const models::Archive& ar, const std::string& prefix) {
     const double dt = ar.get<double>(prefix + "dt");
     start_dynamic(dt);
+    const double a = ar.get<double>(prefix + "crack_length"), speed = ar.get<double>(prefix + "tip_speed");
+    if (a != config_.crack_length) set_crack_length(a, speed);
+    speed_ = speed;
     auto vec = [&](const std::string& k, Eigen::VectorXd& x) {
       const auto v = ar.get_vector<double>(prefix + k);
       if (v.size() != static_cast<std::size_t>(x.size())) throw std::runtime_error("EFG checkpoint: '" + prefix + k + "' has the wrong size");
@@ -707,6 +748,8 @@ class Efg {
   mls::ShapeFunctions<T> cod_sf_;
   bool cod_ready_ = false;
   double cod_x_ = 0.0;
+  bool prescribed_growth_ = false;
+  models::StateRegistry no_views_;
 };
 
 }  // namespace polymech::efg

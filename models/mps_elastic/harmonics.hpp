@@ -49,17 +49,79 @@ inline std::vector<double> burst_ratios(const std::vector<double>& t, const std:
   return a;
 }
 
-// make_hooks(label, model) gives each run's hooks (progress, snapshots); label is "intact" or "crack".
+// make_hooks(label, model) gives each run's hooks (progress, snapshots, checkpoints); label is "intact"
+// or "crack".
 template <class T>
 using HarmonicsHooks = std::function<RunHooks(const std::string& label, MpsElastic<T>& model)>;
 
+// Checkpoints of the pair of runs: each holds "harmonics/run" (the label of the run it was taken in),
+// and those of the cracked run also the finished intact run's record ("harmonics/intact/..."), so a
+// restart continues inside whichever run was going.
+inline std::string harmonics_phase(const models::Archive* a) { return a ? a->get_string("harmonics/run") : std::string(); }
+
+inline void save_harmonics_run(const HarmonicsRun& r, models::Archive& a, const std::string& prefix) {
+  a.put_vector(prefix + "times", r.times);
+  a.put_vector(prefix + "signal", r.signal);
+  const auto& h = r.history;
+  a.put(prefix + "probes", static_cast<std::int64_t>(h.names.size()));
+  a.put(prefix + "probe_fields", static_cast<std::int64_t>(h.fields.size()));
+  for (std::size_t p = 0; p < h.names.size(); ++p) {
+    a.put_string(prefix + "probe_name/" + std::to_string(p), h.names[p]);
+    a.put_columns(prefix + "probe_values/" + std::to_string(p), h.values[p]);
+  }
+  for (std::size_t f = 0; f < h.fields.size(); ++f) a.put_string(prefix + "probe_field/" + std::to_string(f), h.fields[f]);
+  a.put_vector(prefix + "probe_times", h.times);
+  a.put_columns(prefix + "contact", std::vector<std::vector<double>>{r.contact.times, r.contact.separation, r.contact.stick, r.contact.slip});
+  a.put(prefix + "max_shear_force", r.max_shear_force);
+  a.put(prefix + "particles", static_cast<std::int64_t>(r.particles));
+  a.put(prefix + "bonds", static_cast<std::int64_t>(r.bonds));
+  a.put(prefix + "pairs", static_cast<std::int64_t>(r.pairs));
+  a.put(prefix + "steps", r.stats.steps);
+  a.put(prefix + "wall_seconds", r.stats.wall_seconds);
+  a.put(prefix + "restarts", r.stats.restarts);
+  models::save_energy_log(r.stats.energy, a, prefix + "energy/");
+}
+inline HarmonicsRun load_harmonics_run(const models::Archive& a, const std::string& prefix) {
+  HarmonicsRun r;
+  r.times = a.get_vector<double>(prefix + "times");
+  r.signal = a.get_vector<double>(prefix + "signal");
+  auto& h = r.history;
+  const auto probes = a.get<std::int64_t>(prefix + "probes"), fields = a.get<std::int64_t>(prefix + "probe_fields");
+  for (std::int64_t p = 0; p < probes; ++p) {
+    h.names.push_back(a.get_string(prefix + "probe_name/" + std::to_string(p)));
+    h.values.push_back(a.get_columns<double>(prefix + "probe_values/" + std::to_string(p)));
+  }
+  for (std::int64_t f = 0; f < fields; ++f) h.fields.push_back(a.get_string(prefix + "probe_field/" + std::to_string(f)));
+  h.times = a.get_vector<double>(prefix + "probe_times");
+  const auto c = a.get_columns<double>(prefix + "contact");
+  if (c.size() != 4) throw std::runtime_error("checkpoint: " + prefix + "contact needs 4 columns");
+  r.contact = {c[0], c[1], c[2], c[3]};
+  r.max_shear_force = a.get<double>(prefix + "max_shear_force");
+  r.particles = static_cast<Index>(a.get<std::int64_t>(prefix + "particles"));
+  r.bonds = static_cast<Offset>(a.get<std::int64_t>(prefix + "bonds"));
+  r.pairs = static_cast<Index>(a.get<std::int64_t>(prefix + "pairs"));
+  r.stats.steps = a.get<std::int64_t>(prefix + "steps");
+  r.stats.wall_seconds = a.get<double>(prefix + "wall_seconds");
+  r.stats.restarts = a.get<std::int64_t>(prefix + "restarts");
+  r.stats.energy = models::load_energy_log(a, prefix + "energy/");
+  return r;
+}
+
+// One of the two runs. The hooks' resume is used only when that checkpoint was taken in this run
+// (otherwise this run starts from its beginning); `carry` (the intact run's record, in the cracked
+// run) goes into every checkpoint.
 template <class T>
 HarmonicsRun run_harmonics_once(const Config& c, const std::string& probe, int field, const std::string& label,
-                                const HarmonicsHooks<T>& make_hooks) {
+                                const HarmonicsHooks<T>& make_hooks, const HarmonicsRun* carry = nullptr) {
   MpsElastic<T> model(c);
-  const RunHooks hooks = make_hooks ? make_hooks(label, model) : RunHooks{};
+  RunHooks hooks = make_hooks ? make_hooks(label, model) : RunHooks{};
+  if (hooks.resume && harmonics_phase(hooks.resume) != label) hooks.resume = nullptr;
+  hooks.checkpoint.add.push_back([label, carry](models::Archive& a) {
+    a.put_string("harmonics/run", label);
+    if (carry) save_harmonics_run(*carry, a, "harmonics/intact/");
+  });
   HarmonicsRun r;
-  r.stats = run(model, c.steps, hooks);
+  r.stats = run(model, c.steps - (hooks.resume ? hooks.resume->get<std::int64_t>("driver/step") : 0), hooks);
   if (!r.stats.finite)
     throw std::runtime_error("the " + label + " run became unstable (NaN/Inf) before step " + std::to_string(r.stats.steps));
   const auto& h = model.probes();
@@ -77,20 +139,25 @@ HarmonicsRun run_harmonics_once(const Config& c, const std::string& probe, int f
 }
 
 // c: the cracked scene (CrackMode::cut and its contact effects); field: mps::probe_u1 or probe_u3.
+// resume: the checkpoint the hooks resume from (nullptr: none); one taken in the cracked run skips the
+// intact run (its record is in the checkpoint).
 template <class T>
 HarmonicsResult run_harmonics_case(const Config& c, const std::string& probe, int field, double normal_reaction_ratio,
-                                   const HarmonicsHooks<T>& make_hooks = {}) {
+                                   const HarmonicsHooks<T>& make_hooks = {}, const models::Archive* resume = nullptr) {
   HarmonicsResult out;
   Config intact = c;
   intact.crack.mode = CrackMode::monitor;
   intact.effects = EffectSet::resolve(c.effects.has("rotation") ? std::vector<std::string>{"rotation"}
                                                                 : std::vector<std::string>{},
                                       MpsElastic<T>::effects());
-  out.intact = run_harmonics_once<T>(intact, probe, field, "intact", make_hooks);
+  if (harmonics_phase(resume) == "crack")
+    out.intact = load_harmonics_run(*resume, "harmonics/intact/");
+  else
+    out.intact = run_harmonics_once<T>(intact, probe, field, "intact", make_hooks);
   Config cracked = c;
   if (normal_reaction_ratio > 0) cracked.crack.normal_reaction = normal_reaction_ratio * out.intact.max_shear_force;
   out.normal_reaction = cracked.crack.normal_reaction;
-  out.crack = run_harmonics_once<T>(cracked, probe, field, "crack", make_hooks);
+  out.crack = run_harmonics_once<T>(cracked, probe, field, "crack", make_hooks, &out.intact);
 
   out.f0 = 1.0 / c.excitation.period;
   const double dt = c.dt * static_cast<double>(c.probe_every);

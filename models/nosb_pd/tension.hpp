@@ -27,22 +27,39 @@ struct TensionResult {
   double gauge_strain = 0.0, stress = 0.0;
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
+  models::RunStats run;            // the run driver's record (diverged, restarts, checkpoints)
 };
 
+// The steps of the pull: ramp (grip moving) and hold (relaxation).
+struct TensionSteps {
+  std::int64_t ramp = 0, hold = 0;
+};
 template <class T, int D>
-TensionResult run_tension(NosbPd<T, D>& m, const TensionSchedule& sched = {}) {
+TensionSteps tension_steps(const NosbPd<T, D>& m, const TensionSchedule& sched = {}) {
   const Config& c = m.config();
-  const auto t0 = std::chrono::steady_clock::now();
   const double transit = c.geometry.length / bar_wave_speed(c);
-  const auto ramp_steps = static_cast<std::int64_t>(std::ceil(sched.ramp * transit / m.dt()));
-  const auto hold_steps = static_cast<std::int64_t>(std::ceil(sched.hold * transit / m.dt()));
+  return {static_cast<std::int64_t>(std::ceil(sched.ramp * transit / m.dt())),
+          static_cast<std::int64_t>(std::ceil(sched.hold * transit / m.dt()))};
+}
+
+// The pull and the measurement, through the shared run driver (models::run): `hooks` may add
+// progress, a watchdog, checkpoints and a resume (the grip velocity is model state: a run resumed in
+// the hold keeps the grip still).
+template <class T, int D>
+TensionResult run_tension(NosbPd<T, D>& m, const TensionSchedule& sched = {}, models::RunHooks hooks = {}) {
+  const Config& c = m.config();
+  const auto n = tension_steps(m, sched);
   // the grips are one horizon long: the pulled length between their inner edges grows by strain x length
-  m.set_grip_velocity(c.tension.strain * c.geometry.length / (static_cast<double>(ramp_steps) * m.dt()));
-  for (std::int64_t s = 0; s < ramp_steps; ++s) m.step();
-  m.set_grip_velocity(0.0);
-  for (std::int64_t s = 0; s < hold_steps; ++s) m.step();
-  Kokkos::fence();
+  m.set_grip_velocity(n.ramp > 0 ? c.tension.strain * c.geometry.length / (static_cast<double>(n.ramp) * m.dt()) : 0.0);
+  auto after = hooks.after_step;
+  hooks.after_step = [&m, after, ramp = n.ramp](std::int64_t k) {
+    if (k == ramp) m.set_grip_velocity(0.0);
+    if (after) after(k);
+  };
+  const std::int64_t from = hooks.resume ? hooks.resume->get<std::int64_t>("driver/step") : m.step_index();
   TensionResult r;
+  r.run = models::run(m, n.ramp + n.hold - from, hooks);
+  Kokkos::fence();
   const auto meas = m.tension_measure();
   r.gauge_strain = meas.gauge_strain;
   r.stress = meas.grip_force / m.cross_section();
@@ -51,7 +68,7 @@ TensionResult run_tension(NosbPd<T, D>& m, const TensionSchedule& sched = {}) {
   r.reference = D == 3 ? E : E / (1 - nu * nu);
   r.relative_error = (r.modulus - r.reference) / r.reference;
   r.steps = m.step_index();
-  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.wall_seconds = r.run.wall_seconds;
   return r;
 }
 
