@@ -108,14 +108,9 @@ std::vector<V3> accelerations(const dm::SphereSet<double>& s) {
   return out;
 }
 
-// The accelerations from the surface (all facets listed for every sphere) and from the plane z = 0.
-std::pair<std::vector<V3>, std::vector<V3>> mesh_and_plane(const ct::SurfaceMesh<double>& mesh, const std::vector<V3>& p,
-                                                           double r, const std::vector<V3>& v = {}) {
-  const double density = 2500;
-  dm::HertzMindlin<double> law{5e10, 2e10, dm::damping_ratio(0.8), 0.3};
-  auto s = spheres_at(p, r, density, v);
-  pm::neighbors::NeighborList all;  // every facet for every sphere
-  const pm::Index nf = mesh.facet_count(), n = s.size();
+// A two-set list with every facet for every sphere (n spheres, nf facets).
+pm::neighbors::NeighborList every_facet(pm::Index n, pm::Index nf) {
+  pm::neighbors::NeighborList all;
   all.offsets = Kokkos::View<pm::Offset*, pm::MemSpace>("off", n + 1);
   all.neighbors = Kokkos::View<pm::Index*, pm::MemSpace>("nbr", std::size_t(n * nf));
   auto ho = Kokkos::create_mirror_view(all.offsets);
@@ -127,6 +122,17 @@ std::pair<std::vector<V3>, std::vector<V3>> mesh_and_plane(const ct::SurfaceMesh
   Kokkos::deep_copy(all.neighbors, hn);
   all.num_particles = n;
   all.num_pairs = n * nf;
+  return all;
+}
+
+// The accelerations from the surface (all facets listed for every sphere) and from the plane z = 0.
+std::pair<std::vector<V3>, std::vector<V3>> mesh_and_plane(const ct::SurfaceMesh<double>& mesh, const std::vector<V3>& p,
+                                                           double r, const std::vector<V3>& v = {}) {
+  const double density = 2500;
+  dm::HertzMindlin<double> law{5e10, 2e10, dm::damping_ratio(0.8), 0.3};
+  auto s = spheres_at(p, r, density, v);
+  const pm::Index nf = mesh.facet_count(), n = s.size();
+  const auto all = every_facet(n, nf);
   dm::SpringView<double> hist("hist", std::size_t(n * nf));
   dm::body_forces(s, V3::zero());
   dm::sphere_facet_forces(s, mesh, all, hist, law, true, 1e-6);
@@ -292,18 +298,7 @@ TEST(SphereFacet, AMovingSurfaceDragsSpheresAndFeelsTheirReaction) {
     for (double y : {0.008, 0.024, 0.035}) p.push_back(V3{{x, y, r - delta}});
   auto s = spheres_at(p, r, density);
   const pm::Index n = s.size(), nf = mesh.facet_count();
-  pm::neighbors::NeighborList all;
-  all.offsets = Kokkos::View<pm::Offset*, pm::MemSpace>("off", n + 1);
-  all.neighbors = Kokkos::View<pm::Index*, pm::MemSpace>("nbr", std::size_t(n * nf));
-  auto ho = Kokkos::create_mirror_view(all.offsets);
-  auto hn = Kokkos::create_mirror_view(all.neighbors);
-  for (pm::Index i = 0; i <= n; ++i) ho(i) = i * nf;
-  for (pm::Index i = 0; i < n; ++i)
-    for (pm::Index f = 0; f < nf; ++f) hn(i * nf + f) = f;
-  Kokkos::deep_copy(all.offsets, ho);
-  Kokkos::deep_copy(all.neighbors, hn);
-  all.num_particles = n;
-  all.num_pairs = n * nf;
+  const auto all = every_facet(n, nf);
   dm::SpringView<double> hist("hist", std::size_t(n * nf));
   dm::WrenchView<double> reaction("reaction", std::size_t(n));
   dm::SurfaceMotion<double> motion;
