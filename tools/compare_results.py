@@ -18,6 +18,8 @@ import sys
 # summary keys that measure the machine, not the physics
 TIMING_KEYS = {"wall_seconds", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
                "scene",
+               # the ISPH app's timings
+               "particle_steps_per_second", "ppe_share_of_step",
                # the EFG app's timings
                "assembly_seconds", "shape_seconds", "factor_seconds", "solve_seconds", "step_seconds_per_step", "j_seconds"}
 

@@ -8,6 +8,11 @@
 //   ppe_residual_history.csv (the last solve's residual after each iteration),
 //   particles.h5 / particles.xdmf snapshots (position, velocity, pressure, density, free surface).
 //   isph [--scene scenes/isph/dam_break.toml] [--out out/isph] [--accuracy draft|standard|paper]
+//        [--steps N] [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]
+// Checkpoint/restart (issue 16, apps/common/restart.hpp): a checkpoint holds the model (u, v, pressure,
+// step, the rigid body, the solver's counts), the series, the averages under way and the snapshot
+// writer; `--restart OUT` continues the run into OUT and its results are those of a run never
+// interrupted.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +21,7 @@
 #include <vector>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "common/run.hpp"
 #include "io/isph_scene.hpp"
 #include "io/progress.hpp"
@@ -67,10 +73,12 @@ double max_speed(const Model& m) {
 }
 
 template <class T, int D>
-int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt) {
+int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt) {
   const auto& c = scene.config;
-  pm::isph::Isph<T, D> model(c);
   const std::int64_t steps = opt.steps > 0 ? opt.steps : scene.steps;
+  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("isph", scene.header, steps));
+  pm::io::make_output_dir(opt.out);
+  pm::isph::Isph<T, D> model(c);
   if (!opt.quiet)
     std::fprintf(stderr, "[isph] %s\n  case %s, %dD, %d particles, %d wall points, l0 = %.4g m, dt = %.3g s, %lld steps\n",
                  scene.header.title.c_str(), scene.case_name.c_str(), D, int(model.particles()), int(model.wall_points()),
@@ -161,9 +169,45 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
     }
   };
   hooks.watchdog.keep_last_good = true;
-  const auto t0 = std::chrono::steady_clock::now();
-  const me::RunStats stats = me::run(model, steps, hooks);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // the app's records in a checkpoint: the snapshot writer, the series, the dam-break fronts, the
+  // hydrostatic pressure sum and the draft average under way
+  checkpoints.attach(hooks, [&](me::Archive& ar) {
+    snapshots.save(ar);
+    ar.put_columns("isph/series", std::vector<std::vector<double>>{t_col, it_col, res_col, q_col, v_col, by_col, draft_col});
+    std::vector<double> fronts_t, fronts_z;
+    for (const auto& f : fronts) {
+      fronts_t.push_back(f[0].get<double>());
+      fronts_z.push_back(f[1].get<double>());
+    }
+    ar.put_vector("isph/fronts_T", fronts_t);
+    ar.put_vector("isph/fronts_Z", fronts_z);
+    ar.put_vector("isph/psum", psum);
+    ar.put("isph/pcount", pcount);
+    ar.put("isph/draft_sum", draft_sum);
+    ar.put("isph/draft_count", draft_count);
+  }, opt.quiet);
+  if (hooks.resume) {
+    const me::Archive& ar = *hooks.resume;
+    snapshots.resume(ar);
+    const auto cols = ar.get_columns<double>("isph/series");
+    if (cols.size() != 7) throw std::runtime_error("checkpoint: isph/series has " + std::to_string(cols.size()) + " columns");
+    t_col = cols[0];
+    it_col = cols[1];
+    res_col = cols[2];
+    q_col = cols[3];
+    v_col = cols[4];
+    by_col = cols[5];
+    draft_col = cols[6];
+    const auto fronts_t = ar.get_vector<double>("isph/fronts_T"), fronts_z = ar.get_vector<double>("isph/fronts_Z");
+    for (std::size_t k = 0; k < fronts_t.size() && k < fronts_z.size(); ++k) fronts.push_back({fronts_t[k], fronts_z[k]});
+    psum = ar.get_vector<double>("isph/psum");
+    pcount = ar.get<int>("isph/pcount");
+    draft_sum = ar.get<double>("isph/draft_sum");
+    draft_count = ar.get<int>("isph/draft_count");
+    progress.resume_at(checkpoints.resume_step());
+  }
+  const me::RunStats stats = me::run(model, steps - checkpoints.resume_step(), hooks);
+  const double wall = stats.wall_seconds;  // with the time before the checkpoints it resumed from
   progress.done(stats.steps);
   const auto xdmf = snapshots.finish();
 
@@ -194,7 +238,7 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
       }
     j["interior_density_over_rho0"] = n > 0 ? sum / n / c.density : 0.0;
   }
-  j["diverged"] = stats.diverged;
+  pm::apps::put_run_record(j, stats);
   if (stats.diverged) j["reason"] = stats.reason;
   if (dam) {
     j["front_positions"] = fronts;
@@ -235,6 +279,7 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt)
   pm::io::Columns hist = {k_col, h_col};
   pm::io::write_csv(opt.out / "ppe_residual_history.csv", {"iteration", "relative_residual"}, hist);
   pm::io::write_json(opt.out / "summary.json", j);
+  checkpoints.finished();
   if (!opt.quiet) std::printf("%s\n", j.dump(2).c_str());
   if (stats.diverged) {
     std::fprintf(stderr, "isph: the run diverged at step %lld: %s\n", static_cast<long long>(stats.bad_step),
@@ -250,14 +295,15 @@ int main(int argc, char** argv) {
   CLI::App app{"Stabilized ISPH with IGCB walls: hydrostatic tank and dam break (seed 002 paper 4)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/isph/dam_break.toml", "out/isph");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("isph", [&] {
     const auto scene = pm::io::load_isph_scene(opt.scene, opt.precision, opt.accuracy);
     if (pm::apps::announce_cost("isph", scene.header, scene.cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt.threads);
-    pm::io::make_output_dir(opt.out);
     const bool single = scene.header.precision == "float";
-    if (scene.config.dim == 3) return single ? run_case<float, 3>(scene, opt) : run_case<double, 3>(scene, opt);
-    return single ? run_case<float, 2>(scene, opt) : run_case<double, 2>(scene, opt);
+    if (scene.config.dim == 3) return single ? run_case<float, 3>(scene, opt, ropt) : run_case<double, 3>(scene, opt, ropt);
+    return single ? run_case<float, 2>(scene, opt, ropt) : run_case<double, 2>(scene, opt, ropt);
   });
 }

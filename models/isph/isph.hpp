@@ -163,15 +163,37 @@ class Isph {
     return h;
   }
   const models::StateRegistry& state() const { return state_; }
+  // The complete state a step depends on: u, v, the pressure (the PPE's warm start), the step, the rigid
+  // body; with the solver's record (the last solve, the iteration counts) and the safety-net count the
+  // summary reports. The density, the free-surface flags, the wall points' ghost values and the
+  // neighbour lists are recomputed from these at the start of every step.
   void save(models::Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
     a.put(prefix + "step", step_);
     a.put(prefix + "body", body_state_);
+    const long long counts[4] = {ppe_total_, ppe_solves_, escaped_, static_cast<long long>(last_.iterations)};
+    a.put_bytes(prefix + "counts", counts, sizeof counts);
+    const double reals[3] = {ppe_seconds_, last_.residual, last_ok_ ? 1.0 : 0.0};
+    a.put_bytes(prefix + "reals", reals, sizeof reals);
+    a.put_vector(prefix + "last_history", last_.history);
+    a.put_string(prefix + "last_reason", last_reason_);
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
     step_ = a.get<std::int64_t>(prefix + "step");
     body_state_ = a.get<BodyState>(prefix + "body");
+    const auto counts = a.get_vector<long long>(prefix + "counts");
+    const auto reals = a.get_vector<double>(prefix + "reals");
+    if (counts.size() != 4 || reals.size() != 3) throw std::runtime_error("checkpoint: " + prefix + "counts/reals have the wrong size");
+    ppe_total_ = counts[0];
+    ppe_solves_ = counts[1];
+    escaped_ = counts[2];
+    last_.iterations = static_cast<decltype(last_.iterations)>(counts[3]);
+    ppe_seconds_ = reals[0];
+    last_.residual = reals[1];
+    last_ok_ = reals[2] != 0.0;
+    last_.history = a.get_vector<double>(prefix + "last_history");
+    last_reason_ = a.get_string(prefix + "last_reason");
     if (body_) place_body_points();
   }
 
