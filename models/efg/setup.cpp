@@ -136,6 +136,41 @@ void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& y
                    c.crack == CrackKind::none ? c.h_max : c.h_min, c.h_max, c.growth);
 }
 
+namespace {
+double smallest_interval(const std::vector<double>& xs, const std::vector<double>& ys) {
+  double h = 1e300;
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) h = std::min(h, xs[i + 1] - xs[i]);
+  for (std::size_t j = 0; j + 1 < ys.size(); ++j) h = std::min(h, ys[j + 1] - ys[j]);
+  return h;
+}
+// The nodes make_layout puts where the node lines x and y = 0 cross: none on the path of a growing crack
+// (a node there would be seen from both faces once the crack has passed it), two on the crack (one on
+// each face), one elsewhere.
+int crack_line_nodes(const Config& c, double hmin_all, double x) {
+  const double a = c.crack_length;
+  const bool growing = c.growth_speed > 0 && c.final_crack_length > a;
+  const double ax = c.crack == CrackKind::centre ? std::abs(x) : x;
+  if (c.crack == CrackKind::none) return 1;
+  if (growing && ax > a - 1e-9 * hmin_all && ax < c.final_crack_length - 1e-9 * hmin_all) return 0;
+  if (c.crack == CrackKind::edge && x < a - 1e-9 * hmin_all) return 2;
+  if (c.crack == CrackKind::centre && std::abs(x) < a - 1e-9 * hmin_all) return 2;
+  return 1;
+}
+}  // namespace
+
+std::size_t count_nodes(const Config& c) {
+  std::vector<double> xs, ys;
+  node_lines(c, xs, ys);
+  const double hmin_all = smallest_interval(xs, ys);
+  std::size_t n = 0;
+  for (double y : ys)
+    if (c.crack != CrackKind::none && y == 0.0)
+      for (double x : xs) n += static_cast<std::size_t>(crack_line_nodes(c, hmin_all, x));
+    else
+      n += xs.size();
+  return n;
+}
+
 Layout make_layout(const Config& c) {
   Layout L;
   node_lines(c, L.xs, L.ys);
@@ -143,27 +178,13 @@ Layout make_layout(const Config& c) {
   const auto& ys = L.ys;
   const std::size_t nx = xs.size(), ny = ys.size();
   const double a = c.crack_length;
-  double hmin_all = 1e300;
-  for (std::size_t i = 0; i + 1 < nx; ++i) hmin_all = std::min(hmin_all, xs[i + 1] - xs[i]);
-  for (std::size_t j = 0; j + 1 < ny; ++j) hmin_all = std::min(hmin_all, ys[j + 1] - ys[j]);
+  const double hmin_all = smallest_interval(xs, ys);
   const double eps = 1e-7 * hmin_all;  // crack-face nodes sit this far off the face, on their side
   auto local = [](const std::vector<double>& v, std::size_t i) {
     double h = 0.0;
     if (i > 0) h = std::max(h, v[i] - v[i - 1]);
     if (i + 1 < v.size()) h = std::max(h, v[i + 1] - v[i]);
     return h;
-  };
-  // a growing crack: no node on the crack line along its path [a, final_crack_length) (a node there
-  // would be seen from both faces once the crack has passed it)
-  const bool growing = c.growth_speed > 0 && c.final_crack_length > a;
-  auto on_path = [&](double x) {
-    const double ax = c.crack == CrackKind::centre ? std::abs(x) : x;
-    return growing && ax > a - 1e-9 * hmin_all && ax < c.final_crack_length - 1e-9 * hmin_all;
-  };
-  auto on_crack = [&](double x) {
-    if (c.crack == CrackKind::edge) return x < a - 1e-9 * hmin_all;
-    if (c.crack == CrackKind::centre) return std::abs(x) < a - 1e-9 * hmin_all;
-    return false;
   };
   std::uint64_t rng = c.seed;
   for (std::size_t j = 0; j < ny; ++j)
@@ -172,8 +193,9 @@ Layout make_layout(const Config& c) {
       const double d = c.support_factor * std::max(hx, hy);
       double x = xs[i], y = ys[j];
       const bool crack_line = c.crack != CrackKind::none && y == 0.0;
-      if (crack_line && on_path(x)) continue;
-      if (crack_line && on_crack(x)) {
+      const int here = crack_line ? crack_line_nodes(c, hmin_all, x) : 1;
+      if (here == 0) continue;
+      if (here == 2) {
         L.nodes.insert(L.nodes.end(), {x, -eps, x, eps});
         L.dm.insert(L.dm.end(), {d, d});
         continue;

@@ -38,6 +38,9 @@ void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& y
 
 Layout make_layout(const Config& c);
 
+// The node count of make_layout(c), from the node lines only (the loader's cost estimate).
+std::size_t count_nodes(const Config& c);
+
 // Estimated node-line counts of a configuration (x, y) without building them.
 void estimate_lines(const Config& c, double& nx, double& ny);
 
