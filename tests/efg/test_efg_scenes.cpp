@@ -61,6 +61,14 @@ TEST(EfgScenes, EveryShippedSceneLoads) {
     const auto s = io::load_efg_scene(e.path());
     EXPECT_GT(s.handbook, 1.0) << e.path();
     EXPECT_GT(s.cost.items, 100.0) << e.path();
+    // the cost estimate counts the nodes the layout places, and names the method that runs
+    EXPECT_EQ(s.cost.items, static_cast<double>(polymech::efg::make_layout(s.config).node_count())) << e.path();
+    if (s.dynamic) {
+      EXPECT_NE(s.cost.method.find("Newmark"), std::string::npos) << e.path();
+      EXPECT_EQ(s.cost.steps, std::ceil(s.duration / s.dt - 1e-9)) << e.path();
+    } else {
+      EXPECT_NE(s.cost.method.find("static"), std::string::npos) << e.path();
+    }
     ++n;
   }
   EXPECT_GE(n, 2);
