@@ -14,7 +14,6 @@
 // writer; `--restart OUT` continues the run into OUT and its results are those of a run never
 // interrupted.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
