@@ -16,7 +16,7 @@ import os
 import sys
 
 # summary keys that measure the machine, not the physics
-TIMING_KEYS = {"wall_seconds", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
+TIMING_KEYS = {"wall_seconds", "shape_function_evaluations_per_second", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
                "scene",
                # the ISPH app's timings
                "particle_steps_per_second", "ppe_share_of_step",
