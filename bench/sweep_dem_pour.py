@@ -1,9 +1,9 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Accuracy against cost of the DEM pour (issue 13; promise 1): the packing fraction of a poured bed
 against the time step, with the scatter of the random packing measured by repeating each step size
 over several seeds (a pour is chaotic: the bed of one seed is one sample of the packing).
 
-    python3 bench/sweep_dem_pour.py [--app build/ci/bin/dem_pour] [--scene scenes/dem/sphere_pour.toml]
+    /usr/bin/python3 bench/sweep_dem_pour.py [--app build/ci/bin/dem_pour] [--scene scenes/dem/sphere_pour.toml]
         [--accuracy standard] [--safety 0.8 0.4 0.2 0.1] [--seeds 1 2 3] [--out out/sweep_dem_pour]
 
 Runs `dem_pour` (1 thread, no snapshots) for every time-step safety factor (dt = factor x the Hertz /
