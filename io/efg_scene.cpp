@@ -104,8 +104,16 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
   const double room = std::min({c.crack == efg::CrackKind::edge ? c.crack_length : 2 * c.crack_length,
                                 c.crack == efg::CrackKind::edge ? c.width - c.crack_length : 0.5 * c.width - c.crack_length,
                                 0.5 * c.height});
-  for (double r : c.j_radii)
-    if (!(r < room)) j.fail("radii", "has " + format_number(r) + " m: a contour must stay inside the plate and cross only the crack (radius < " + format_number(room) + " m)");
+  c.j_band = j.real("band", 0.0, Range{0.0, 4.0, false, false, "x the local node spacing (0: the single contour of the paper)"});
+  for (double r : c.j_radii) {
+    const double half = 0.5 * efg::j_band_width(c, r);
+    if (!(r + half < room))
+      j.fail("radii", "has " + format_number(r) + " m" + (half > 0 ? " (band to " + format_number(r + half) + " m)" : std::string()) +
+                          ": a contour must stay inside the plate and cross only the crack (radius < " + format_number(room) + " m)");
+    if (!(r - half > 0))
+      j.fail("band", "reaches the tip on the path of radius " + format_number(r) + " m (half-width " + format_number(half) +
+                         " m): lower band or raise radii");
+  }
   c.j_arcs = static_cast<int>(j.integer("arcs", 20, 4, 400));
   c.j_gauss = static_cast<int>(j.integer("gauss", 4, 1, 4));
   out.domain_cells = static_cast<int>(j.integer("domain_cells", 20, 2, 100));
@@ -133,7 +141,7 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
       if (!(c.final_crack_length > c.crack_length)) dyn->fail("final_crack_length", "must exceed plate.crack_length for a growing crack");
       const double ahead = c.crack == efg::CrackKind::edge ? c.width - c.final_crack_length : 0.5 * c.width - c.final_crack_length;
       for (double r : c.j_radii)
-        if (!(r < ahead)) dyn->fail("final_crack_length", "leaves " + format_number(ahead) + " m ahead of the final tip, less than the J-integral radius " + format_number(r) + " m");
+        if (!(r + 0.5 * efg::j_band_width(c, r) < ahead)) dyn->fail("final_crack_length", "leaves " + format_number(ahead) + " m ahead of the final tip, less than the J-integral radius " + format_number(r) + " m");
     }
     dyn->finish();
     // The dynamic run's time from the rates measured in docs/PERFORMANCE.md, 'EFG dynamics (Newmark,

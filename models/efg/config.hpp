@@ -52,6 +52,12 @@ struct Config {
   std::vector<double> j_radii{0.2, 0.25, 0.3, 0.35, 0.4};
   int j_arcs = 20;
   int j_gauss = 4;
+  // J-integral band: > 0 replaces the contour value at radius r by its mean over the radii
+  // [r - d/2, r + d/2], d = j_band x the local node spacing h(r) = min(h_max, h_min + growth r), taken at
+  // 4 radial Gauss points (a smoothed, equivalent-domain form of eq. (13)); 0: the single contour of the
+  // paper. The single contour carries an error that oscillates with r at the period of the node lines
+  // (docs/METHODS.md, 'J-integral band').
+  double j_band = 0.0;
   // Crack growth at a prescribed speed (seed 004 §3.3): from t = growth_start [s] both tips run at
   // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack); the crack line
   // carries no node along the path (a node on it would be seen from both faces once the crack passed;

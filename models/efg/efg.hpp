@@ -199,6 +199,8 @@ class Efg {
   }
 
   const Config& config() const { return config_; }
+  // The J-integral band (Config::j_band) of later J and J' evaluations; the solution is untouched.
+  void set_j_band(double band) { config_.j_band = band; }
   const Layout& layout() const { return layout_; }
   Index nodes() const { return static_cast<Index>(layout_.node_count()); }
   const Timings& timings() const { return timings_; }
@@ -453,10 +455,19 @@ class Efg {
   double strain_energy() const { return 0.5 * ud_.dot(K_ * ud_); }
   double load_work() const { return f_.dot(ud_); }
 
+  // seed 004 eq. (13) on the path of `radius`: dynamic_j_at(radius) (the paper's single circle) when
+  // Config::j_band is 0, else the mean of dynamic_j_at over the band of radii [r - d/2, r + d/2],
+  // d = j_band_width(r), at 4 radial Gauss points. The mean over r of eq. (13) equals the equivalent
+  // domain integral with q(r) falling linearly across the band; it cancels the error of the MLS
+  // stresses that oscillates with r at the period of the node lines (docs/METHODS.md, 'J-integral band').
+  JResult dynamic_j(double radius, int cells = 20) {
+    return banded(radius, [&](double r) { return dynamic_j_at(r, cells); }, effective_modulus(config_) / velocity_factor(speed_), initial_a_);
+  }
+
   // seed 004 eq. (13): J' = int_Gamma [(W + K) n_1 - t_i u_i,1] dS + int_V [rho a_i u_i,1 - rho v_i v_i,1] dV
   // on the circle of `radius` around the tip and the disc inside it (radial x angular cells of `cells`
   // each, 4 x 4 Gauss points: the paper's 20 x 20).
-  JResult dynamic_j(double radius, int cells = 20) {
+  JResult dynamic_j_at(double radius, int cells = 20) {
     auto& c = contour_cache(radius, cells);
     double j = 0.0;
     const auto u = probe(c.contour, u_), v = probe(c.contour, v_);
@@ -549,10 +560,16 @@ class Efg {
     return r;
   }
 
+  // The static J on the path of `radius`: j_integral_at(radius) when Config::j_band is 0, else its mean
+  // over the band of radii as in dynamic_j.
+  JResult j_integral(double radius) const {
+    return banded(radius, [&](double r) { return j_integral_at(r); }, effective_modulus(config_), config_.crack_length);
+  }
+
   // seed 004 eq. (13), static part: J = int_Gamma (W n_1 - t_i u_i,1) dS on the circle of `radius`
   // around the tip, counter-clockwise from the lower crack face to the upper one (the crack faces are
   // traction-free); `arcs` arcs x `gauss` Gauss points.
-  JResult j_integral(double radius) const {
+  JResult j_integral_at(double radius) const {
     const int arcs = config_.j_arcs;
     std::vector<double> gx, gw;
     gauss_rule(config_.j_gauss, gx, gw);
@@ -617,6 +634,26 @@ class Efg {
   }
 
  private:
+  // J (and K from it) on the path of `radius`: at_radius(radius) without a band, else the mean of
+  // at_radius over the 4 radial Gauss points of [radius - d/2, radius + d/2], d = j_band_width(radius).
+  // `modulus`: K^2 = J x modulus; `a_ref`: the length of K / (stress sqrt(pi a_ref)).
+  template <class F>
+  JResult banded(double radius, F&& at_radius, double modulus, double a_ref) const {
+    const double d = j_band_width(config_, radius);
+    if (!(d > 0)) return at_radius(radius);
+    std::vector<double> gx, gw;
+    gauss_rule(4, gx, gw);
+    double j = 0.0;
+    for (std::size_t g = 0; g < gx.size(); ++g) j += 0.5 * gw[g] * at_radius(radius + 0.5 * d * gx[g]).j;
+    constexpr double pi = 3.14159265358979323846;
+    JResult r;
+    r.radius = radius;
+    r.j = j;
+    r.k = std::sqrt(std::max(0.0, j) * modulus);
+    r.factor = config_.stress > 0 ? r.k / (config_.stress * std::sqrt(pi * a_ref)) : 0.0;
+    return r;
+  }
+
   struct ContourCache {
     double radius = 0.0;
     int cells = 0;

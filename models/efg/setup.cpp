@@ -280,6 +280,11 @@ double handbook_factor(const Config& c) {
   return 0.0;
 }
 
+double j_band_width(const Config& c, double r) {
+  if (!(c.j_band > 0)) return 0.0;
+  return c.j_band * std::min(c.h_max, c.h_min + c.growth * r);
+}
+
 double effective_modulus(const Config& c) {
   return c.plane_strain ? c.young / (1 - c.poisson * c.poisson) : c.young;
 }

@@ -49,6 +49,10 @@ void estimate_lines(const Config& c, double& nx, double& ny);
 // F(a/b) = (1 - 0.025 s^2 + 0.06 s^4) sqrt(sec(pi s / 2)) (0.1 %), b the half-width.
 double handbook_factor(const Config& c);
 
+// The radial band of the J-integral at radius r (Config::j_band): j_band x min(h_max, h_min + growth r),
+// the node spacing of the layout's rule at distance r from the tip; 0 when j_band is 0.
+double j_band_width(const Config& c, double r);
+
 // Effective modulus of K = sqrt(J E'): E / (1 - nu^2) in plane strain, E in plane stress.
 double effective_modulus(const Config& c);
 
