@@ -148,8 +148,9 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     // stationary crack)' (chen_centre_crack_dynamic.toml, 120 steps, 1 thread): shape functions + K, M
     // 0.45 s for 36 000 Gauss points, 0.94 s / 80 000, 1.79 s / 218 400 (about 1e5 points/s); the K_eff
     // factorisation 0.019 s at 404 nodes, 0.33 s at 2 292 (about 3e-6 nodes^1.5 s); a step 0.8 ms at 404
-    // nodes, 7.9 ms at 2 292 (about 3e-6 s per node); J' 0.47-0.60 s over 120 outputs (about 5 ms per
-    // output). A running crack rebuilds the shape functions, K, M and K_eff at every growth step ('Running
+    // nodes, 7.9 ms at 2 292 (about 3e-6 s per node); J' 0.47-0.60 s over 61 outputs (about 5 ms per
+    // output) on single circles, 1.11-1.38 s with j_integral.band > 0 (4 circles and discs per path: about
+    // 20 ms per output). A running crack rebuilds the shape functions, K, M and K_eff at every growth step ('Running
     // crack': 12 growth steps of about 2 s each at 2 272 nodes, 31.6 s in all).
     const double n = static_cast<double>(efg::count_nodes(c));
     const double build = gauss_points / 1e5 + 3e-6 * std::pow(n, 1.5);
@@ -160,14 +161,15 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
       growth_steps = std::clamp(std::ceil(std::min(run_time, std::max(0.0, out.duration - from)) / out.dt - 1e-9), 0.0, steps);
     }
     const double outputs = std::ceil(steps / out.output_every);
+    const double per_output = c.j_band > 0 ? 2e-2 : 5e-3;
     out.cost.method = c.growth_speed > 0 ? "EFG (MLS, Newmark average acceleration, running crack)"
                                          : "EFG (MLS, Newmark average acceleration)";
     out.cost.steps = steps;
     out.cost.step_name = "Newmark steps";
-    out.cost.seconds = build * (1.0 + growth_steps) + steps * n * 3e-6 + outputs * 5e-3;
-    out.cost.rate = "1e5 Gauss points/s for shape functions + K, M; 3e-6 nodes^1.5 s per K_eff factorisation; 3e-6 s per node-step; "
-                    "5 ms per J' output; a rebuild at each of " + format_number(growth_steps) +
-                    " growth steps (1 thread), docs/PERFORMANCE.md 'EFG dynamics'";
+    out.cost.seconds = build * (1.0 + growth_steps) + steps * n * 3e-6 + outputs * per_output;
+    out.cost.rate = std::string("1e5 Gauss points/s for shape functions + K, M; 3e-6 nodes^1.5 s per K_eff factorisation; 3e-6 s per node-step; ") +
+                    (c.j_band > 0 ? "20 ms per J' output (band); " : "5 ms per J' output; ") + "a rebuild at each of " +
+                    format_number(growth_steps) + " growth steps (1 thread), docs/PERFORMANCE.md 'EFG dynamics'";
   }
   out.cost.items = static_cast<double>(efg::count_nodes(c));  // the nodes the layout will place (the size check above used an upper estimate)
   root.finish();

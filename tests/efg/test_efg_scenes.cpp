@@ -94,3 +94,18 @@ TEST(EfgScenes, BadScenesAreRefusedAtTheirKey) {
                {"model.precision", "double"});
   expect_error(replace_once(kBase, "stress = 1.0e6", "stress = nan"), "stress = nan", {"loading.stress"});
 }
+
+// The J-integral band (j_integral.band, x the local node spacing): loads, and is refused where the band
+// of a path would reach the tip or leave the plate, or out of its range.
+TEST(EfgScenes, JIntegralBand) {
+  polymech::testing::TempDir dir;
+  const std::string banded = replace_once(kBase, "radii = [0.2, 0.3]", "radii = [0.2, 0.3]\nband = 1.0");
+  const auto s = io::load_efg_scene(dir.write("scene.toml", banded));
+  EXPECT_EQ(s.config.j_band, 1.0);
+  EXPECT_EQ(io::load_efg_scene(dir.write("scene.toml", kBase)).config.j_band, 0.0);
+  // h(0.005) = 0.0125 + 0.25 x 0.005: the band's half-width 0.0069 > 0.005
+  expect_error(replace_once(banded, "radii = [0.2, 0.3]", "radii = [0.005, 0.3]"), "band = 1.0", {"j_integral.band", "reaches the tip"});
+  // h(0.49) = h_max = 0.05: the band reaches 0.515, past the room of 0.5
+  expect_error(replace_once(banded, "radii = [0.2, 0.3]", "radii = [0.2, 0.49]"), "radii = [0.2, 0.49]", {"j_integral.radii", "band to"});
+  expect_error(replace_once(banded, "band = 1.0", "band = 5.0"), "band = 5.0", {"j_integral.band"});
+}
