@@ -121,6 +121,7 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<double>& model, pm::
   j["sif_peak_time_us"] = peak_t;
   j["j_path_spread"] = peak_spread;
   j["j_radii"] = c.j_radii;
+  j["j_band"] = c.j_band;  // J' on each path: the mean over r +- j_band h(r) / 2 (0: single circles)
   j["energy_error"] = max_work > 0 ? worst_energy / max_work : 0.0;
   // timings of this process (a resumed run: since its restart)
   j["assembly_seconds"] = t.assembly_seconds;
@@ -223,6 +224,7 @@ int main(int argc, char** argv) {
     j["sif_error"] = mean / scene.handbook - 1;
     j["sif_max_abs_error"] = std::abs(*std::max_element(errs.begin(), errs.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
     j["j_path_spread"] = (hi - lo) / hi;
+    j["j_band"] = c.j_band;
     j["crack_opening"] = cod;
     j["shape_seconds"] = t.shape_seconds;
     j["assembly_seconds"] = t.assembly_seconds;
