@@ -96,6 +96,10 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
     c.body.added_mass = body->real("added_mass", 1.0, Range{0.0, 10.0, false, false, "C_a (0: plain CSS as the paper)"});
     c.body.release_time = body->real("release_time", 0.0, Range{0.0, 1e6, false, false, "s (held fixed until then)"});
     out.draft_average_last = body->real("draft_average_last", 0.0, Range{0.0, 1e6, false, false, "s"});
+    c.body.contact_modulus =
+        body->real("contact_modulus", 0.0, Range{0.0, 1e13, false, false, "Pa, E* of the body-tank contact (0: automatic)"});
+    c.body.restitution = body->real("restitution", 0.5, Range{0.01, 1.0, true, false, "of the body-tank contact"});
+    c.body.friction = body->real("friction", 0.3, Range{0.0, 10.0, false, false, "Coulomb, body against the tank"});
     body->finish();
   } else if (c.effects.has("rigid_body")) {
     s.model.fail("effects", "lists \"rigid_body\" but the scene has no [body] table");
@@ -118,6 +122,14 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   out.steps = static_cast<std::int64_t>(steps);
   if (out.average_last > out.end_time) time.fail("average_last", "is longer than end_time");
 
+  if (c.effects.has("rigid_body")) {
+    const isph::BodyContact bc = isph::body_contact(c);
+    if (bc.contact_time < 10.0 * c.dt)
+      time.fail("dt", "= " + format_number(c.dt) + " s is too long for the body's contact with the tank: an impact at " +
+                          format_number(bc.reference_speed) + " m/s lasts " + format_number(bc.contact_time) +
+                          " s with body.contact_modulus = " + format_number(bc.e_star) +
+                          " Pa; at least 10 steps are needed (lower the modulus or dt)");
+  }
   const auto n = isph::count(c);
   out.cost = isph_cost(double(n.fluid), double(n.wall_points), c.dim, steps);
   out.cost.size_keys = {"fluid.spacing = " + format_number(c.spacing) + " m (after the accuracy preset)",

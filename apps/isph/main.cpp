@@ -101,17 +101,28 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
 
   const bool dam = scene.case_name == "dam_break";
   const double a = c.fluid[0], tscale = std::sqrt(2 * c.gravity / a);
-  std::vector<double> t_col, it_col, res_col, q_col, v_col, by_col, draft_col;
+  std::vector<double> t_col, it_col, res_col, q_col, v_col, by_col, draft_col, draft_s_col, fy_col;
   const bool body = model.has_body();
-  double draft_sum = 0.0;
+  double draft_sum = 0.0, draft_s_sum = 0.0;
+  double lowest_gap = 1e300;  // the smallest distance between the body and the tank's bottom over the samples
   int draft_count = 0;
-  // the draft: the free surface away from the body (mean height of the surface particles more than one
-  // diameter from the centre, plus l0/2) minus the body's lowest point
+  // The draft, two readings (docs/VALIDATION.md, ISPH floating body), both the water level minus the
+  // body's lowest point, with the level
+  //  - from the volume (`draft_over_diameter`): the height L of a flat free surface over the tank's width W
+  //    holding the water (N l0^2) and the part of the body below L: W L = N l0^2 + A_seg(L - y_low), the
+  //    undisturbed level of Archimedes' principle;
+  //  - from the particles (`draft_over_diameter_surface_particles`): the mean height of the surface
+  //    particles more than one diameter from the body, plus l0/2 (where the eye puts it; the surface layer
+  //    settles 0.2-0.5 l0 below the water's level, see the hydrostatic tank).
+  struct Draft {
+    double volume = 0.0, surface = 0.0;
+  };
   auto draft_now = [&]() {
     const auto x = model.host_positions();
     const auto srf = model.host_surface();
     const auto& b = model.body();
-    const double D_ = c.body.diameter;
+    const double D_ = c.body.diameter, R = 0.5 * D_, W = c.tank[0];
+    const double bottom = b.centre[1] - R;
     double sum = 0;
     int n = 0;
     for (std::size_t i = 0; i < srf.size(); ++i)
@@ -119,8 +130,20 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
         sum += x[i * D + 1];
         ++n;
       }
-    const double level = n > 0 ? sum / n + 0.5 * c.spacing : c.fluid[1];
-    return level - (b.centre[1] - 0.5 * D_);
+    auto segment = [R](double h) {  // the area of the disc below a line h above its lowest point
+      h = std::min(std::max(h, 0.0), 2 * R);
+      return R * R * std::acos((R - h) / R) - (R - h) * std::sqrt(std::max(0.0, 2 * R * h - h * h));
+    };
+    const double water = double(model.particles()) * c.spacing * c.spacing;
+    double lo = 0.0, hi = c.tank[1] + 2 * R;  // W L - A_seg(L - bottom) rises with L (W > 2R): bisection
+    for (int k = 0; k < 100; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (W * mid - segment(mid - bottom) < water ? lo : hi) = mid;
+    }
+    Draft d;
+    d.volume = 0.5 * (lo + hi) - bottom;
+    d.surface = (n > 0 ? sum / n + 0.5 * c.spacing : c.fluid[1]) - bottom;
+    return d;
   };
   nlohmann::json fronts = nlohmann::json::array();
   std::vector<double> psum;
@@ -152,10 +175,14 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     v_col.push_back(max_speed(model));
     if (body) {
       by_col.push_back(model.body().centre[1]);
-      const double d = draft_now();
-      draft_col.push_back(d / c.body.diameter);
+      lowest_gap = std::min(lowest_gap, model.body().centre[1] - 0.5 * c.body.diameter);
+      const Draft d = draft_now();
+      draft_col.push_back(d.volume / c.body.diameter);
+      draft_s_col.push_back(d.surface / c.body.diameter);
+      fy_col.push_back(model.body().force[1]);
       if (scene.draft_average_last > 0 && t >= scene.end_time - scene.draft_average_last) {
-        draft_sum += d / c.body.diameter;
+        draft_sum += d.volume / c.body.diameter;
+        draft_s_sum += d.surface / c.body.diameter;
         ++draft_count;
       }
     }
@@ -172,7 +199,8 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   // hydrostatic pressure sum and the draft average under way
   checkpoints.attach(hooks, [&](me::Archive& ar) {
     snapshots.save(ar);
-    ar.put_columns("isph/series", std::vector<std::vector<double>>{t_col, it_col, res_col, q_col, v_col, by_col, draft_col});
+    ar.put_columns("isph/series", std::vector<std::vector<double>>{t_col, it_col, res_col, q_col, v_col, by_col, draft_col,
+                                                                    draft_s_col, fy_col});
     std::vector<double> fronts_t, fronts_z;
     for (const auto& f : fronts) {
       fronts_t.push_back(f[0].get<double>());
@@ -183,13 +211,15 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     ar.put_vector("isph/psum", psum);
     ar.put("isph/pcount", pcount);
     ar.put("isph/draft_sum", draft_sum);
+    ar.put("isph/draft_surface_sum", draft_s_sum);
     ar.put("isph/draft_count", draft_count);
+    ar.put("isph/lowest_gap", lowest_gap);
   }, opt.quiet);
   if (hooks.resume) {
     const me::Archive& ar = *hooks.resume;
     snapshots.resume(ar);
     const auto cols = ar.get_columns<double>("isph/series");
-    if (cols.size() != 7) throw std::runtime_error("checkpoint: isph/series has " + std::to_string(cols.size()) + " columns");
+    if (cols.size() != 9) throw std::runtime_error("checkpoint: isph/series has " + std::to_string(cols.size()) + " columns");
     t_col = cols[0];
     it_col = cols[1];
     res_col = cols[2];
@@ -197,12 +227,16 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     v_col = cols[4];
     by_col = cols[5];
     draft_col = cols[6];
+    draft_s_col = cols[7];
+    fy_col = cols[8];
     const auto fronts_t = ar.get_vector<double>("isph/fronts_T"), fronts_z = ar.get_vector<double>("isph/fronts_Z");
     for (std::size_t k = 0; k < fronts_t.size() && k < fronts_z.size(); ++k) fronts.push_back({fronts_t[k], fronts_z[k]});
     psum = ar.get_vector<double>("isph/psum");
     pcount = ar.get<int>("isph/pcount");
     draft_sum = ar.get<double>("isph/draft_sum");
+    draft_s_sum = ar.get<double>("isph/draft_surface_sum");
     draft_count = ar.get<int>("isph/draft_count");
+    lowest_gap = ar.get<double>("isph/lowest_gap");
     progress.resume_at(checkpoints.resume_step());
   }
   const me::RunStats stats = me::run(model, steps - checkpoints.resume_step(), hooks);
@@ -256,7 +290,19 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     j["body_angle"] = b.theta;
     j["body_density_ratio"] = c.body.density_ratio;
     j["body_area_by_quadrature"] = model.body_properties().area;
+    j["body_force"] = {b.force[0], b.force[1], b.moment};  // the fluid's, last step [N/m, N/m, N]
+    j["body_mass"] = model.body_properties().mass;
+    j["body_contact_force"] = {b.contact_force[0], b.contact_force[1], b.contact_moment};  // the tank's
+    j["body_drift_over_diameter"] =
+        std::hypot(b.centre[0] - c.body.centre[0], b.centre[1] - c.body.centre[1]) / c.body.diameter;
+    j["body_speed"] = std::hypot(b.v[0], b.v[1]);
+    j["body_gap_to_bottom"] = b.centre[1] - 0.5 * c.body.diameter;  // < 0: overlapping the bottom
+    j["body_lowest_gap_to_bottom"] = lowest_gap;
+    j["body_weight"] = model.body_properties().mass * c.gravity;
+    j["body_buoyancy_immersed"] = c.density * c.gravity * model.body_properties().area;
     j["draft_over_diameter"] = draft_count > 0 ? draft_sum / draft_count : (draft_col.empty() ? 0.0 : draft_col.back());
+    j["draft_over_diameter_surface_particles"] =
+        draft_count > 0 ? draft_s_sum / draft_count : (draft_s_col.empty() ? 0.0 : draft_s_col.back());
     j["draft_averaged_over_samples"] = draft_count;
     j["archimedes_draft_over_diameter"] = pm::isph::archimedes_draft_over_diameter(c.body.density_ratio);
   }
@@ -266,8 +312,12 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   if (body) {
     cols.push_back(by_col);
     cols.push_back(draft_col);
+    cols.push_back(draft_s_col);
+    cols.push_back(fy_col);
     head.push_back("body_y");
     head.push_back("draft_over_diameter");
+    head.push_back("draft_over_diameter_surface_particles");
+    head.push_back("body_force_y");
   }
   pm::io::write_csv(opt.out / "series.csv", head, cols);
   std::vector<double> k_col, h_col;

@@ -18,6 +18,11 @@ struct Body {
   double added_mass = 1.0;         // C_a: the coupling treats C_a rho0 pi R^2 implicitly (0: the paper's plain CSS)
   double release_time = 0.0;      // [s] held fixed (force still computed) until then: the pressure of the
                                   // water started from rest needs a few hundred steps to become hydrostatic
+  // Contact with the tank's bottom and sides: the shared Hertz-Mindlin law (kernels/contact/hertz_mindlin.hpp)
+  // of a disc of unit thickness against a rigid plane.
+  double contact_modulus = 0.0;   // E* [Pa] (0: the modulus whose impact at the tank's free-fall speed lasts 20 steps)
+  double restitution = 0.5;       // of an impact in the contact law alone (the water damps it further)
+  double friction = 0.3;          // Coulomb coefficient against the walls
 };
 
 struct Config {

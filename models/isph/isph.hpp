@@ -17,6 +17,7 @@
 //   -> [rigid_body] force and moment from the reactions at the body's points, Euler update (CSS).
 // Walls: the tank of an axis-aligned box (sides and bottom, open top) and, with `rigid_body`, a 2D
 // cylinder of polar cells; a general cell mesh of IGCB (arbitrary walls) is not built (docs/METHODS.md).
+// The body touches the tank through the shared Hertz-Mindlin law (kernels/contact/hertz_mindlin.hpp).
 #pragma once
 
 #include <array>
@@ -27,6 +28,7 @@
 #include <vector>
 
 #include "common/archive.hpp"
+#include "contact/hertz_mindlin.hpp"
 #include "common/particle_health.hpp"
 #include "common/run.hpp"
 #include "common/state.hpp"
@@ -151,6 +153,9 @@ class Isph {
   struct BodyState {
     double centre[2] = {0, 0}, theta = 0, v[2] = {0, 0}, omega = 0, a[2] = {0, 0}, alpha = 0, force[2] = {0, 0},
            moment = 0;
+    // contact with the tank (bottom, left, right wall): the force and moment of the last step and the
+    // tangential spring of each wall (kernels/contact/hertz_mindlin.hpp)
+    double contact_force[2] = {0, 0}, contact_moment = 0, spring[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
   };
   const BodyState& body() const { return body_state_; }
 
@@ -383,30 +388,52 @@ class Isph {
       // contains -m_a a (m_a = C_a rho0 pi R^2 for a cylinder); explicit staggered coupling then updates
       // a_{n+1} = (F_rest - m_a a_n) / m, which diverges when m_a >= m (density ratio <= 1 at C_a = 1).
       // Moving m_a a to the left, (m + m_a) a_{n+1} = F + m_a a_n - m g, has the same fixed point and is
-      // stable (not in the paper; added_mass = 0 gives the paper's plain CSS).
+      // stable (not in the paper; added_mass = 0 gives the paper's plain CSS). (The Neumann pressure of
+      // eq. (26) alone carries little of m_a: -dF/da through it is 1.0-1.4 kg/m against m_a = 7.9 kg/m for
+      // D = 0.1 m at l0 = D/5 and D/10, measured; the rest acts through the PPE's wall velocities.)
       const double pi = 3.14159265358979323846;
       const double ma = cfg_.body.added_mass * cfg_.density * pi * R * R;
-      b.v[0] += dt * (out[0] + ma * b.a[0]) / (m + ma);
-      b.v[1] += dt * (out[1] + ma * b.a[1] - m * cfg_.gravity) / (m + ma);
-      b.omega += dt * out[2] / props_.inertia;          // eq. (32)
+      tank_contact(R);
+      const double fx = out[0] + b.contact_force[0], fy = out[1] + b.contact_force[1];
+      b.v[0] += dt * (fx + ma * b.a[0]) / (m + ma);
+      b.v[1] += dt * (fy + ma * b.a[1] - m * cfg_.gravity) / (m + ma);
+      b.omega += dt * (out[2] + b.contact_moment) / props_.inertia;  // eq. (32)
       b.centre[0] += dt * b.v[0];
       b.centre[1] += dt * b.v[1];
       b.theta += dt * b.omega;
-      const double lo[2] = {R, R}, hi[2] = {cfg_.tank[0] - R, 1e300};
-      for (int k = 0; k < 2; ++k) {
-        if (b.centre[k] < lo[k]) {
-          b.centre[k] = lo[k];
-          if (b.v[k] < 0) b.v[k] = 0;
-        } else if (b.centre[k] > hi[k]) {
-          b.centre[k] = hi[k];
-          if (b.v[k] > 0) b.v[k] = 0;
-        }
-      }
       b.a[0] = (b.v[0] - v0[0]) / dt;
       b.a[1] = (b.v[1] - v0[1]) / dt;
       b.alpha = (b.omega - w0) / dt;
       place_body_points();
       escaped_ += push_out_of_body(f_, T(b.centre[0]), T(b.centre[1]), T(R + 0.25 * cfg_.spacing));
+    }
+  }
+  // The body against the tank's bottom (y = 0) and sides (x = 0, x = width): the shared Hertz-Mindlin law
+  // (kernels/contact/hertz_mindlin.hpp) of a disc of unit thickness on a rigid plane, with damping and
+  // Coulomb friction, explicit like the fluid coupling; its force and moment join the fluid's in eqs.
+  // (31)-(32). (It replaces a kinematic stop: a body that reaches a wall must not pass through it.)
+  void tank_contact(double R) {
+    auto& b = body_state_;
+    // a rigid body and a rigid wall: the law's moduli are the contact's (nu = 0: G* = G / 2 = E* / 4)
+    const contact::HertzMindlin<double> law{bc_.e_star, 0.25 * bc_.e_star, bc_.beta, bc_.mu};
+    const double planes[3][3] = {{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}, {-1.0, 0.0, cfg_.tank[0]}};  // n . x + d >= 0 inside
+    b.contact_force[0] = b.contact_force[1] = b.contact_moment = 0.0;
+    for (int w = 0; w < 3; ++w) {
+      const double nx = planes[w][0], ny = planes[w][1];
+      const double gap = nx * b.centre[0] + ny * b.centre[1] + planes[w][2] - R;  // < 0: overlap
+      Vec3<double> xi{{b.spring[w][0], b.spring[w][1], b.spring[w][2]}};
+      if (gap >= 0.0) {
+        b.spring[w][0] = b.spring[w][1] = b.spring[w][2] = 0.0;
+        continue;
+      }
+      const Vec3<double> n{{nx, ny, 0.0}};
+      // the body's velocity at the contact point c - R n: v + omega x (-R n)
+      const Vec3<double> vc{{b.v[0] + b.omega * R * ny, b.v[1] - b.omega * R * nx, 0.0}};
+      const auto f = contact::hertz_mindlin_force(law, R, bc_.mass, -gap, n, vc, bc_.mu > 0.0, cfg_.dt, xi);
+      b.contact_force[0] += f.force[0];
+      b.contact_force[1] += f.force[1];
+      b.contact_moment += -R * (nx * f.force[1] - ny * f.force[0]);  // lever -R n
+      for (int k = 0; k < 3; ++k) b.spring[w][k] = xi[k];
     }
   }
   void keep_inside() {
@@ -482,6 +509,7 @@ class Isph {
       if (body_) {
         cells_b = body_cells(cfg_);
         props_ = mass_properties(cfg_, cells_b);
+        bc_ = body_contact(cfg_);
       }
     }
     const std::size_t m = tank_points + cells_b.weight.size();
@@ -540,6 +568,7 @@ class Isph {
   Index body_begin_ = 0;
   VecView<T, D> body_offset_;
   MassProperties props_;
+  BodyContact bc_;
   BodyState body_state_;
   sph::Params<T, D> par_;
   sph::Fluid<T, D> f_;

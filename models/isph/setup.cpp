@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "dem/setup.hpp"
+
 namespace polymech::isph {
 
 namespace {
@@ -118,6 +120,23 @@ TimeStepLimit time_step_limit(const Config& c) {
   return t;
 }
 
+BodyContact body_contact(const Config& c) {
+  BodyContact b;
+  const double R = 0.5 * c.body.diameter, pi = 3.14159265358979323846;
+  b.mass = c.body.density_ratio * c.density * pi * R * R;
+  b.reference_speed = std::sqrt(2.0 * c.gravity * c.tank[1]);
+  if (!(R > 0) || !(b.reference_speed > 0)) return b;
+  // Hertz impact time t = 2.87 (m^2 / (R E*^2 v))^(1/5) (contact::hertz_contact_time), solved for E*
+  const double target = 20.0 * c.dt;
+  b.e_star = c.body.contact_modulus > 0
+                 ? c.body.contact_modulus
+                 : std::sqrt(b.mass * b.mass / (R * b.reference_speed * std::pow(target / 2.87, 5.0)));
+  b.contact_time = 2.87 * std::pow(b.mass * b.mass / (R * b.e_star * b.e_star * b.reference_speed), 0.2);
+  b.beta = dem::hertz_damping_ratio(c.body.restitution);
+  b.mu = c.body.friction;
+  return b;
+}
+
 std::string check(const Config& c) {
   if (c.dim != 2 && c.dim != 3) return "dim must be 2 or 3";
   if (c.effects.has("rigid_body")) {
@@ -127,6 +146,10 @@ std::string check(const Config& c) {
     if (c.body.centre[0] - R < 0 || c.body.centre[0] + R > c.tank[0] || c.body.centre[1] - R < 0 ||
         c.body.centre[1] + R > c.tank[1])
       return "the body is not inside the tank";
+    const BodyContact bc = body_contact(c);
+    if (bc.contact_time < 10.0 * c.dt)
+      return "the body's contact with the tank lasts " + g(bc.contact_time) + " s at " + g(bc.reference_speed) +
+             " m/s, fewer than 10 steps: lower body.contact_modulus or dt";
   }
   for (int k = 0; k < c.dim; ++k) {
     if (c.fluid[k] > c.tank[k] * (1 + 1e-9)) return "the water block is larger than the tank";

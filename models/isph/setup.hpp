@@ -44,6 +44,14 @@ struct TimeStepLimit {
 };
 TimeStepLimit time_step_limit(const Config& c);
 
+// The body's contact with the tank (effect `rigid_body`): the Hertz-Mindlin constants, the body's mass per
+// unit thickness, and the duration of an undamped impact at the reference speed sqrt(2 g height) (a fall
+// through the whole tank), which must span at least 10 steps (the scene's default spans 20).
+struct BodyContact {
+  double e_star = 0.0, beta = 0.0, mu = 0.0, mass = 0.0, reference_speed = 0.0, contact_time = 0.0;
+};
+BodyContact body_contact(const Config& c);
+
 // Empty when the configuration can run; otherwise why not (rigid_body not implemented, fluid outside
 // the tank, ...).
 std::string check(const Config& c);

@@ -1,0 +1,108 @@
+#!/usr/bin/python3
+"""Accuracy against cost of the ISPH floating cylinder (issue 12; promise 1): the equilibrium draft of a
+cylinder of density ratio 0.8 against Archimedes, over the particle spacing (particles across the
+cylinder), with the CPU time of each run.
+
+    /usr/bin/python3 bench/sweep_isph_float.py [--app build/ci/bin/isph]
+        [--scene scenes/isph/floating_cylinder_small.toml] [--across 4 5 8 10 12.5] [--out out/sweep_isph_float]
+
+Each run is the scene with fluid.spacing = D / across and dt = 0.1 s/m x spacing (1e-3 s at 1 cm: CFL 0.4 at
+the surge speed allows 1.2e-3 s), one thread, no snapshots. Writes OUT/sweep.csv (across, spacing, dt,
+particles, steps, both draft readings and their errors against Archimedes, the body's height scatter over the
+averaging window, PPE iterations, particles put back, CPU seconds) and OUT/accuracy_cost.png. Optional, outside
+ctest.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import resource
+import subprocess
+import sys
+
+
+def run(app, text, work, across):
+    os.makedirs(work, exist_ok=True)
+    D = float(re.search(r"(?m)^diameter = ([0-9.eE+-]+)", text).group(1))
+    spacing = D / across
+    dt = 0.1 * spacing
+    text = re.sub(r"(?m)^spacing = .*$", f"spacing = {spacing!r}", text)
+    text = re.sub(r"(?m)^dt = .*$", f"dt = {dt!r}", text)
+    text = re.sub(r"(?m)^snapshot_every = .*$", "snapshot_every = 0.0", text)
+    scene = os.path.join(work, "scene.toml")
+    with open(scene, "w") as f:
+        f.write(text)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMP_WAIT_POLICY="passive")
+    subprocess.run([app, "--scene", scene, "--threads", "1", "--quiet", "--out", work], check=True, env=env,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    s = json.load(open(os.path.join(work, "summary.json")))
+    arch = s["archimedes_draft_over_diameter"]
+    # the body's height over the averaging window (the series' last draft_average_last seconds)
+    rows = list(csv.DictReader(open(os.path.join(work, "series.csv"))))
+    end = float(rows[-1]["time"])
+    window = float(re.search(r"(?m)^draft_average_last = ([0-9.eE+-]+)", text).group(1))
+    ys = [float(r["body_y"]) for r in rows if float(r["time"]) >= end - window]
+    mean = sum(ys) / len(ys)
+    scatter = (sum((y - mean) ** 2 for y in ys) / len(ys)) ** 0.5
+    return {"across": across, "spacing": spacing, "dt": dt, "particles": s["particles"], "steps": s["steps"],
+            "draft_volume": s["draft_over_diameter"], "draft_surface": s["draft_over_diameter_surface_particles"],
+            "archimedes": arch, "error_volume": s["draft_over_diameter"] / arch - 1,
+            "error_surface": s["draft_over_diameter_surface_particles"] / arch - 1,
+            "body_y_scatter_over_D": scatter / D, "ppe_iterations_mean": s["ppe_iterations_mean"],
+            "particles_put_back": s["particles_put_back_inside"], "cpu_seconds": cpu}
+
+
+def plot(rows, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("sweep_isph_float.py: no matplotlib, no plot", file=sys.stderr)
+        return
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    t = [r["cpu_seconds"] for r in rows]
+    ax.loglog(t, [abs(r["error_volume"]) for r in rows], "o-", label="level from the water's volume")
+    ax.loglog(t, [abs(r["error_surface"]) for r in rows], "s--", label="level from the surface particles")
+    for r in rows:
+        ax.annotate(f"D/l0={r['across']:g}", (r["cpu_seconds"], abs(r["error_volume"])), fontsize=7,
+                    textcoords="offset points", xytext=(4, 4))
+    ax.axhline(0.02, color="grey", lw=0.8, ls=":", label="issue: 2 %")
+    ax.set_xlabel("CPU time [s], one thread")
+    ax.set_ylabel("|draft / Archimedes - 1|")
+    ax.set_title("ISPH floating cylinder (density ratio 0.8): draft against cost")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--app", default="build/ci/bin/isph")
+    p.add_argument("--scene", default="scenes/isph/floating_cylinder_small.toml")
+    p.add_argument("--across", type=float, nargs="+", default=[4, 5, 8, 10, 12.5])
+    p.add_argument("--out", default="out/sweep_isph_float")
+    a = p.parse_args()
+    if not os.path.exists(a.app):
+        sys.exit(f"sweep_isph_float.py: {a.app} not found (cmake --build --preset ci --target isph)")
+    text = open(a.scene).read()
+    rows = []
+    for n in a.across:
+        r = run(a.app, text, os.path.join(a.out, f"across{n:g}"), n)
+        rows.append(r)
+        print(f"D/l0 = {n:g}: {r['particles']} particles, {r['steps']} steps: draft {r['draft_volume']:.4f} "
+              f"({100 * r['error_volume']:+.1f} %), surface particles {r['draft_surface']:.4f} "
+              f"({100 * r['error_surface']:+.1f} %), {r['cpu_seconds']:.0f} CPU s", flush=True)
+        with open(os.path.join(a.out, "sweep.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+    plot(rows, os.path.join(a.out, "accuracy_cost.png"))
+
+
+if __name__ == "__main__":
+    main()
