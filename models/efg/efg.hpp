@@ -382,12 +382,15 @@ class Efg {
 
   // The prescribed growth of seed 004 §3.3 (config growth_start, growth_speed, final_crack_length): from
   // growth_start both tips run at growth_speed up to final_crack_length. grow_crack() moves them to where
-  // they are at the current time (nothing before growth_start or once there); with
-  // set_prescribed_growth(true) every step() does it first (the runs of models::run).
+  // they are at the END of the coming step, t_n + dt (nothing before growth_start or once there): the
+  // implicit step solves the balance at t_n + dt, so the solution at time t has the crack a(t) (moving
+  // it to a(t_n) instead lags the crack by one step: the first step after growth_start then still has
+  // the stationary crack). With set_prescribed_growth(true) every step() does it first (models::run).
   void grow_crack() {
     const auto& c = config_;
-    if (!(c.growth_speed > 0) || time_ < c.growth_start - 1e-3 * dt_) return;
-    const double a = std::min(c.final_crack_length, initial_a_ + c.growth_speed * (time_ - c.growth_start));
+    const double t = time_ + dt_;
+    if (!(c.growth_speed > 0) || t <= c.growth_start + 1e-3 * dt_) return;
+    const double a = std::min(c.final_crack_length, initial_a_ + c.growth_speed * (t - c.growth_start));
     if (a > c.crack_length) set_crack_length(a, a < c.final_crack_length ? c.growth_speed : 0.0);
   }
   void set_prescribed_growth(bool on) { prescribed_growth_ = on; }

@@ -130,6 +130,28 @@ TEST(EfgDynamic, RunningCrackStaysBounded) {
   EXPECT_LT(cod_max, 1e-3);  // 1 mm: the stationary plate opens by ~30 um
 }
 
+// The prescribed growth moves the crack to where it is at the END of each step (the implicit step solves
+// the balance at t_n + dt): the first step after growth_start already has a = a0 + v dt and the tip's
+// speed, so the K after the onset (Freund's comparison, docs/VALIDATION.md) is that of a running crack.
+// Moving it to a(t_n) instead lagged the crack by one step (a = a0 after the first step past t0).
+TEST(EfgDynamic, PrescribedGrowthPutsTheCrackWhereItIsAtTheEndOfTheStep) {
+  auto c = coarse_chen_plate();
+  c.growth_speed = 1000.0;
+  c.growth_start = 0.8e-6;
+  c.final_crack_length = 0.0040;
+  efg::Efg<double> m(c);
+  const double dt = 0.4e-6;
+  m.start_dynamic(dt);
+  m.set_prescribed_growth(true);
+  for (int s = 0; s < 2; ++s) m.step();  // 0.8 us = growth_start: not yet running
+  EXPECT_NEAR(m.crack_length(), c.crack_length, 1e-15);
+  m.step();  // 1.2 us: the crack at a0 + v (t - t0)
+  EXPECT_NEAR(m.time(), 1.2e-6, 1e-15);
+  EXPECT_NEAR(m.crack_length(), c.crack_length + c.growth_speed * (m.time() - c.growth_start), 1e-12);
+  for (int s = 0; s < 6; ++s) m.step();  // 3.6 us: arrested at the final length
+  EXPECT_NEAR(m.crack_length(), c.final_crack_length, 1e-12);
+}
+
 // The paper's node set for Chen's plate (h_min = 0.15 mm, h_max = 0.8 mm, 2 292 nodes; 4 x 4 background
 // points here for the time): at the peak of K (15.2 us) the single circles of eq. (13) at r = 0.8 ... 1.6 mm
 // disagree by 6.6 % in J' (their error oscillates with r at the period of the node lines, as in a static
