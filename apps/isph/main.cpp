@@ -121,7 +121,7 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     const auto x = model.host_positions();
     const auto srf = model.host_surface();
     const auto& b = model.body();
-    const double D_ = c.body.diameter, R = 0.5 * D_, W = c.tank[0];
+    const double D_ = c.body.diameter, R = 0.5 * D_, W = model.tank_size(0);
     const double bottom = b.centre[1] - R;
     double sum = 0;
     int n = 0;

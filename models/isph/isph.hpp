@@ -148,6 +148,8 @@ class Isph {
   bool has_body() const { return body_; }
   Index body_begin() const { return body_begin_; }  // the body's points are wall points [body_begin, end)
   const MassProperties& body_properties() const { return props_; }
+  // The inner size of the tank as built along axis k: the scene's size rounded to whole spacings.
+  double tank_size(int k) const { return box_[k]; }
   // The rigid body's state (2D): centre of the disk, angle, velocities, the fluid force and moment of the
   // last step (eqs. (36)-(37)), and the acceleration used by the next step's Neumann condition (25).
   struct BodyState {
@@ -416,7 +418,7 @@ class Isph {
     auto& b = body_state_;
     // a rigid body and a rigid wall: the law's moduli are the contact's (nu = 0: G* = G / 2 = E* / 4)
     const contact::HertzMindlin<double> law{bc_.e_star, 0.25 * bc_.e_star, bc_.beta, bc_.mu};
-    const double planes[3][3] = {{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}, {-1.0, 0.0, cfg_.tank[0]}};  // n . x + d >= 0 inside
+    const double planes[3][3] = {{0.0, 1.0, 0.0}, {1.0, 0.0, 0.0}, {-1.0, 0.0, box_[0]}};  // n . x + d >= 0 inside
     b.contact_force[0] = b.contact_force[1] = b.contact_moment = 0.0;
     for (int w = 0; w < 3; ++w) {
       const double nx = planes[w][0], ny = planes[w][1];
@@ -441,7 +443,7 @@ class Isph {
     const T margin = T(0.25 * cfg_.spacing);
     for (int k = 0; k < D; ++k) {
       lo[k] = margin;
-      hi[k] = T(cfg_.tank[k]) - margin;
+      hi[k] = T(box_[k]) - margin;
     }
     hi[1] = T(1e30);  // open top
     escaped_ += keep_inside(f_, lo, hi);
@@ -492,6 +494,7 @@ class Isph {
     const long long layers = static_cast<long long>(std::ceil(cfg_.radius_factor - 1e-9));
     const long long nx = cells(cfg_.tank[0], l0), ny = cells(cfg_.tank[1], l0), nz = D == 3 ? cells(cfg_.tank[2], l0) : 1;
     const double box[3] = {nx * l0, ny * l0, nz * l0};
+    for (int k = 0; k < 3; ++k) box_[k] = box[k];
     std::vector<double> pts;
     const long long z0 = D == 3 ? -layers : 0, z1 = D == 3 ? nz + layers : 1;
     for (long long c = z0; c < z1; ++c)
@@ -569,6 +572,9 @@ class Isph {
   VecView<T, D> body_offset_;
   MassProperties props_;
   BodyContact bc_;
+  // the tank as built: whole cells of l0 (tank sizes rounded to a multiple of the spacing), which the
+  // walls, the safety net and the body's contact all use
+  double box_[3] = {0.0, 0.0, 0.0};
   BodyState body_state_;
   sph::Params<T, D> par_;
   sph::Fluid<T, D> f_;
