@@ -270,13 +270,15 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
 }
 
 // Kernel "polymech::dem::wheel_reaction_sum": the rows of a WrenchView summed in index order (the
-// surface's total load; the same for any thread count).
+// surface's total load; the same for any thread count). `partial`: the sum's chunk table, kept by the caller.
 template <class T>
-std::array<double, 6> wrench_sum(const WrenchView<T>& w) {
-  const auto sum = particles::ordered_sum<6>("polymech::dem::wheel_reaction_sum", static_cast<std::int64_t>(w.extent(0)),
-                                             KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
-                                               for (int k = 0; k < 6; ++k) acc[k] += double(w(i, k));
-                                             });
+std::array<double, 6> wrench_sum(const WrenchView<T>& w, particles::SumPartials& partial) {
+  const auto sum = particles::ordered_sum<6>(
+      "polymech::dem::wheel_reaction_sum", static_cast<std::int64_t>(w.extent(0)),
+      KOKKOS_LAMBDA(const std::int64_t i, double* acc) {
+        for (int k = 0; k < 6; ++k) acc[k] += double(w(i, k));
+      },
+      partial);
   std::array<double, 6> out{};
   for (int k = 0; k < 6; ++k) out[static_cast<std::size_t>(k)] = sum[k];
   return out;

@@ -15,13 +15,18 @@ namespace polymech::particles {
 
 inline constexpr std::int64_t sum_chunk = 2048;
 
-// Sums N doubles over i in [0, n): term(i, acc) adds item i's contributions to acc[0..N).
-// Diagnostics only (energies, reactions, power iterations): it allocates its chunk table.
+// The chunk table of ordered_sum: a caller that sums every step keeps one and passes it in (no allocation
+// per call once it is large enough).
+using SumPartials = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>;
+
+// Sums N doubles over i in [0, n): term(i, acc) adds item i's contributions to acc[0..N). `partial` is
+// (re)allocated when it has fewer than ceil(n / sum_chunk) x N entries.
 template <int N, class Term>
-Kokkos::Array<double, N> ordered_sum(const char* label, std::int64_t n, const Term& term) {
+Kokkos::Array<double, N> ordered_sum(const char* label, std::int64_t n, const Term& term, SumPartials& partial) {
   const std::int64_t chunks = (n + sum_chunk - 1) / sum_chunk;
-  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> partial(
-      Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::particles::ordered_sum_partials")), chunks, N);
+  if (static_cast<std::int64_t>(partial.extent(0)) < chunks || partial.extent(1) != static_cast<std::size_t>(N))
+    partial = SumPartials(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::particles::ordered_sum_partials")), chunks, N);
   Kokkos::parallel_for(
       label, Kokkos::RangePolicy<ExecSpace>(0, chunks), KOKKOS_LAMBDA(const std::int64_t c) {
         double acc[N];
@@ -36,6 +41,13 @@ Kokkos::Array<double, N> ordered_sum(const char* label, std::int64_t n, const Te
   for (std::int64_t c = 0; c < chunks; ++c)
     for (int k = 0; k < N; ++k) out[k] += h(c, k);
   return out;
+}
+
+// The same with a chunk table of its own (diagnostics: energies, reactions, power iterations).
+template <int N, class Term>
+Kokkos::Array<double, N> ordered_sum(const char* label, std::int64_t n, const Term& term) {
+  SumPartials partial;
+  return ordered_sum<N>(label, n, term, partial);
 }
 
 // sum_i v_i of a vector field (thread-count independent), e.g. a contact reaction.

@@ -478,7 +478,7 @@ class Dem {
   // The wheel's loads: the spheres' reaction summed in index order (thread-count independent) and the
   // vertical load of the schedule (the wheel carries no weight of its own: the load is all of it).
   void wheel_loads() {
-    const auto sum = wrench_sum(reaction_);
+    const auto sum = wrench_sum(reaction_, reaction_partials_);
     for (int k = 0; k < 6; ++k) contact_[static_cast<std::size_t>(k)] = sum[k];
     auto& b = wheel_body_(0);
     const bool placed = wheel_info_(0) > 0;
@@ -525,6 +525,7 @@ class Dem {
   Kokkos::View<double*, HostSpace> wheel_info_;                // placed, time placed, bed level, highest
   VecView<T, 3> wheel_reference_;                              // its nodes relative to its centre
   WrenchView<T> reaction_;                                     // per sphere: what it gives the wheel
+  particles::SumPartials reaction_partials_;                   // the chunk table of its sum (kept across steps)
   std::array<double, 6> contact_{};                            // their sum (last step)
   models::StateRegistry state_;
   std::int64_t step_ = 0;
