@@ -168,13 +168,21 @@ double repose_angle(const std::vector<std::array<double, 4>>& spheres, const Pou
     const auto b = static_cast<std::size_t>(std::min(bins - 1, static_cast<int>(s[0] / w)));
     h[b] = std::max(h[b], s[2] + s[3]);
   }
-  const double top = *std::max_element(h.begin(), h.end());
+  const auto peak = static_cast<int>(std::max_element(h.begin(), h.end()) - h.begin());
+  const double top = h[static_cast<std::size_t>(peak)];
+  if (profile)
+    for (int b = 0; b < bins; ++b) profile->push_back({(b + 0.5) * w, h[static_cast<std::size_t>(b)]});
+  // the slope: from the first bin past the peak below 80 % of it to the first below 30 % (the toe); the
+  // grains that ran out onto the floor beyond the toe (a layer one clump high, ~20 % of the heap) are not
+  // part of it
+  int b0 = peak;
+  while (b0 < bins && h[static_cast<std::size_t>(b0)] > 0.8 * top) ++b0;
+  int b1 = b0;
+  while (b1 < bins && h[static_cast<std::size_t>(b1)] >= 0.3 * top) ++b1;
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
-  for (int b = 0; b < bins; ++b) {
+  for (int b = b0; b < b1; ++b) {
     const double x = (b + 0.5) * w, y = h[static_cast<std::size_t>(b)];
-    if (profile) profile->push_back({x, y});
-    if (y < 0.2 * top || y > 0.8 * top) continue;
     sx += x;
     sy += y;
     sxx += x * x;

@@ -26,8 +26,9 @@ inline constexpr std::size_t kReleaseWall = 2;
 
 // The angle of repose of a heap against the wall x = 0: the surface height h(x) (highest sphere top
 // in bins of width 2 radius_max, over the middle half of the bin in y), a least-squares line through
-// the bins whose height lies between 20 % and 80 % of the highest bin's, angle = atan(-slope) in
-// degrees. profile gets the (x, h) rows. NaN when fewer than three bins are in that band.
+// the slope: the bins from the first past the highest below 80 % of its height to the toe (the first
+// below 30 %), so the layer of grains that ran out beyond the toe is left out; angle = atan(-slope) in
+// degrees. profile gets the (x, h) rows. NaN when fewer than three bins are on the slope.
 double repose_angle(const std::vector<std::array<double, 4>>& spheres, const PourSpec& spec,
                     std::vector<std::array<double, 2>>* profile = nullptr);
 
