@@ -19,7 +19,7 @@ struct TimeStepLimit {
   std::string describe() const;  // "1.2e-06 s (0.2 x Rayleigh time 6e-06 s; Hertz contact time ...)"
 };
 
-// The damping ratio beta (<= 0) for which the damped Hertz law of kernels/dem/hertz_mindlin.hpp (no
+// The damping ratio beta (<= 0) for which the damped Hertz law of kernels/contact/hertz_mindlin.hpp (no
 // attraction) rebounds with the restitution e in (0, 1]. The usual beta = ln e / sqrt(ln^2 e + pi^2) is
 // the linear spring's and gives a larger restitution on a Hertz spring (0.32 for e = 0.2); the law is
 // scale-free (the damping grows as delta^(1/4)), so beta depends on e alone: found by bisection on the
