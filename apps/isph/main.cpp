@@ -130,15 +130,11 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
         sum += x[i * D + 1];
         ++n;
       }
-    auto segment = [R](double h) {  // the area of the disc below a line h above its lowest point
-      h = std::min(std::max(h, 0.0), 2 * R);
-      return R * R * std::acos((R - h) / R) - (R - h) * std::sqrt(std::max(0.0, 2 * R * h - h * h));
-    };
     const double water = double(model.particles()) * c.spacing * c.spacing;
     double lo = 0.0, hi = c.tank[1] + 2 * R;  // W L - A_seg(L - bottom) rises with L (W > 2R): bisection
     for (int k = 0; k < 100; ++k) {
       const double mid = 0.5 * (lo + hi);
-      (W * mid - segment(mid - bottom) < water ? lo : hi) = mid;
+      (W * mid - pm::isph::segment_area(R, mid - bottom) < water ? lo : hi) = mid;
     }
     Draft d;
     d.volume = 0.5 * (lo + hi) - bottom;

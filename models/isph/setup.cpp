@@ -79,16 +79,20 @@ MassProperties mass_properties(const Config& c, const BodyCells& b) {
   return p;
 }
 
+double segment_area(double R, double h) {
+  h = std::min(std::max(h, 0.0), 2 * R);
+  return R * R * std::acos((R - h) / R) - (R - h) * std::sqrt(std::max(0.0, 2 * R * h - h * h));
+}
+
 double archimedes_draft_over_diameter(double s) {
-  // submerged segment of central angle phi: area R^2 (phi - sin phi) / 2 = s pi R^2; draft R (1 - cos(phi/2))
+  // the draft h of a unit-radius disc whose submerged segment has the area s pi (segment_area rises with h)
   const double pi = 3.14159265358979323846;
-  double lo = 0.0, hi = 2 * pi;
+  double lo = 0.0, hi = 2.0;
   for (int k = 0; k < 200; ++k) {
     const double mid = 0.5 * (lo + hi);
-    ((mid - std::sin(mid)) / 2 < s * pi ? lo : hi) = mid;
+    (segment_area(1.0, mid) < s * pi ? lo : hi) = mid;
   }
-  const double phi = 0.5 * (lo + hi);
-  return 0.5 * (1 - std::cos(phi / 2));
+  return 0.25 * (lo + hi);
 }
 
 Counts count(const Config& c) {

@@ -33,6 +33,9 @@ struct MassProperties {
 };
 MassProperties mass_properties(const Config& c, const BodyCells& cells);
 
+// The area of a disc of radius R below a line h above its lowest point (0 for h <= 0, pi R^2 for h >= 2R).
+double segment_area(double R, double h);
+
 // The equilibrium draft over the diameter of a floating cylinder of density ratio s (Archimedes: the
 // submerged circular segment has the area s pi R^2).
 double archimedes_draft_over_diameter(double density_ratio);
