@@ -50,6 +50,7 @@ struct WallPoints {
   View1<T> p;             // p_c,m, eq. (26)
   VecView<T, D> u;        // u_c,m, eqs. (27)-(30)
   View1<T> shepard;       // sum_j V_j W_gj at the ghost (0: no fluid near it)
+  VecView<T, D + 1> interp;  // ghost interpolation weights: value_g = sum_j V_j W_gj (c0 + c . (x_j - x_g)) f_j
   Index size() const { return static_cast<Index>(x.extent(0)); }
 };
 
@@ -64,6 +65,8 @@ struct Params {
   T beta = T(0.9);    // free surface: rho_i < beta rho0
   Vec<T, D> g;
   bool slip = false;  // eqs. (27)-(28) instead of (29)-(30)
+  bool difference_gradient = false;  // grad p by (p_j - p_i), (p_c - p_i) instead of eqs. (9), (19)
+  bool linear_ghosts = true;  // ghost values by a linear fit (exact for a hydrostatic field); false: Shepard, eq. (23)
   bool surface_correction = true;  // free-surface particles: eq. (9) divided by rho_i / rho0 (the kernel's
                                    // share inside the fluid), see FluidPressureGradient
 };
@@ -109,7 +112,134 @@ struct WallDensity {
   KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
 };
 
-// ---- ghost values: Shepard interpolation eqs. (23)-(24) at the ghost of each wall point ----
+// ---- ghost interpolation weights (once per step, the fluid positions fixed) ----
+// Shepard, eq. (23): value_g = sum_j w_j f_j / sum_j w_j, w_j = V_j W(x_g - x_j). Near a wall the
+// ghost's support is cut by the wall and the weighted centroid of its neighbours lies a fraction of l0
+// further into the fluid: in a hydrostatic field the ghost pressure is then too low above a wall and too
+// high below one, which lifts an immersed body (+3-4 % buoyancy, docs/VALIDATION.md). The linear fit
+// (moving least squares with the basis [1, x] and the same weights; not in the paper, docs/METHODS.md)
+// is exact for linear fields: with the normalised weights w^_j = w_j / s, the centroid offset
+// m = sum w^_j r_j (r_j = x_j - x_g) and the covariance C = sum w^_j r_j r_j^T - m m^T,
+//   value_g = sum_j w_j [(1 + m^T C^-1 m) - (C^-1 m) . r_j] / s f_j,
+// i.e. c0 = (1 + m^T C^-1 m)/s, c = -C^-1 m / s. Where the neighbours do not span the plane (det(C) below
+// det_min = (1e-3 re^2)^D; a full support has about (0.05 re^2)^D) or the ghost lies far outside their
+// cloud (m^T C^-1 m > 4: extrapolation over two of the cloud's standard deviations), the ghost falls back
+// to Shepard (c0 = 1/s, c = 0).
+// The weighted moments of a ghost's neighbours r_j = x_j - x_g: s = sum w_j, sum w_j r_j, sum w_j r_j r_j^T;
+// their centroid offset m and covariance C (normalised by s).
+template <class T, int D>
+struct Moments {
+  T s;
+  Vec<T, D> sr;
+  Mat<T, D> srr;
+  KOKKOS_INLINE_FUNCTION static Moments zero() { return {T(0), Vec<T, D>::zero(), Mat<T, D>::zero()}; }
+  KOKKOS_INLINE_FUNCTION void add(T w, const Vec<T, D>& r) {
+    s += w;
+    sr += w * r;
+    srr += w * outer(r, r);
+  }
+  KOKKOS_INLINE_FUNCTION void join(const Moments& b) {
+    s += b.s;
+    sr += b.sr;
+    srr += b.srr;
+  }
+  KOKKOS_INLINE_FUNCTION Vec<T, D> centroid() const { return (T(1) / s) * sr; }
+  KOKKOS_INLINE_FUNCTION Mat<T, D> covariance(const Vec<T, D>& m) const { return (T(1) / s) * srr - outer(m, m); }
+};
+
+template <class T, int D>
+struct GhostWeights {
+  Fluid<T, D> f;
+  WallPoints<T, D> wp;
+  Params<T, D> c;
+  T det_min;  // the smallest det(C) taken as regular
+  using Accumulator = Moments<T, D>;
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return Accumulator::zero(); }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index k, Index j, Offset) const {
+    Vec<T, D> r;
+    const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
+    acc.add(wv, -r);  // r_j = x_j - x_g
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index k, Accumulator& acc) const {
+    for (int d = 0; d <= D; ++d) wp.interp(k, d) = T(0);
+    if (!(acc.s > T(0))) return;  // no fluid near the ghost: value 0 (pressure) / the wall's (velocity)
+    const T inv_s = T(1) / acc.s;
+    wp.interp(k, 0) = inv_s;
+    if (!c.linear_ghosts) return;
+    const Vec<T, D> m = acc.centroid();
+    const Mat<T, D> C = acc.covariance(m);
+    if (!(det(C) > det_min)) return;
+    const Vec<T, D> cm = inverse(C) * m;
+    const T q = dot(m, cm);
+    if (!(q <= T(4))) return;
+    wp.interp(k, 0) = (T(1) + q) * inv_s;
+    for (int d = 0; d < D; ++d) wp.interp(k, d + 1) = -cm[d] * inv_s;
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& a, const Accumulator& b) { a.join(b); }
+};
+
+// The fluid pressure at the wall's surface point q_k = (x_k + ghost_k) / 2 of wall points [begin, end) (the
+// body's outer ring), by the weighted linear least-squares fit of the ghost's neighbours (weights as in
+// GhostWeights) evaluated at q_k: p(q) = pbar + b . (q - x_g - m), b = C^-1 sum w^_j (r_j - m) p_j; the
+// Shepard mean pbar where the fit is singular; 0 where no fluid is near (a dry point above the water).
+// Used for the body's pressure force with the difference form (Isph::body_surface_force).
+template <class T, int D>
+struct SurfacePressure {
+  Fluid<T, D> f;
+  WallPoints<T, D> wp;
+  Params<T, D> c;
+  Index begin, end;
+  T det_min;
+  View1<T> out;  // [end - begin]
+  struct Accumulator {
+    Moments<T, D> mo;
+    T sp;
+    Vec<T, D> srp;
+  };
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {Moments<T, D>::zero(), T(0), Vec<T, D>::zero()}; }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index k, Index j, Offset) const {
+    if (k < begin || k >= end) return;
+    Vec<T, D> r;
+    const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
+    r = -r;  // x_j - x_g
+    const T pj = f.surface(j) ? T(0) : f.pressure(j);
+    acc.mo.add(wv, r);
+    acc.sp += wv * pj;
+    acc.srp += (wv * pj) * r;
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index k, Accumulator& acc) const {
+    if (k < begin || k >= end) return;
+    T p = T(0);
+    if (acc.mo.s > T(0)) {
+      const T inv_s = T(1) / acc.mo.s;
+      const T pbar = inv_s * acc.sp;
+      p = pbar;
+      const Vec<T, D> m = acc.mo.centroid();
+      const Mat<T, D> C = acc.mo.covariance(m);
+      if (det(C) > det_min) {
+        const Vec<T, D> b = inverse(C) * (inv_s * acc.srp - pbar * m);
+        const Vec<T, D> delta = T(0.5) * (load<D>(wp.x, k) - load<D>(wp.ghost, k)) - m;  // q - x_g - m
+        p = pbar + dot(b, delta);
+      }
+    }
+    out(k - begin) = p;
+  }
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator& a, const Accumulator& b) {
+    a.mo.join(b.mo);
+    a.sp += b.sp;
+    a.srp += b.srp;
+  }
+};
+
+// The weight of fluid particle j in the value at ghost k (r = x_g - x_j, as pair_distance gives it).
+template <class T, int D>
+KOKKOS_FORCEINLINE_FUNCTION T ghost_weight(const WallPoints<T, D>& wp, Index k, T wv, const Vec<T, D>& r) {
+  T lin = wp.interp(k, 0);
+  for (int d = 0; d < D; ++d) lin -= wp.interp(k, d + 1) * r[d];
+  return wv * lin;
+}
+
+// ---- ghost values at the ghost of each wall point, eqs. (23)-(24), by the weights above ----
 // Pressure: p_c,m = p_g + d rho0 (g - a_Gamma) . n (eq. (26)); `affine` false drops the second term
 // (the homogeneous part, for the PPE operator). Surface particles enter with p = 0.
 template <class T, int D>
@@ -127,10 +257,10 @@ struct GhostPressure {
     Vec<T, D> r;
     const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
     acc.s += wv;
-    if (!f.surface(j)) acc.sp += wv * pin(j);
+    if (!f.surface(j)) acc.sp += ghost_weight<T, D>(wp, k, wv, r) * pin(j);
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index k, Accumulator& acc) const {
-    T p = acc.s > T(0) ? acc.sp / acc.s : T(0);
+    T p = acc.sp;
     if (affine) {
       const Vec<T, D> n = load<D>(wp.normal, k);
       const Vec<T, D> ga = c.g - load<D>(wp.accel, k);
@@ -162,11 +292,11 @@ struct GhostVelocity {
     Vec<T, D> r;
     const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
     acc.s += wv;
-    acc.su += wv * load<D>(vin, j);
+    acc.su += ghost_weight<T, D>(wp, k, wv, r) * load<D>(vin, j);
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index k, Accumulator& acc) const {
     const Vec<T, D> vg = load<D>(wp.velocity, k);
-    const Vec<T, D> rel = acc.s > T(0) ? (T(1) / acc.s) * acc.su - vg : Vec<T, D>::zero();
+    const Vec<T, D> rel = acc.s > T(0) ? acc.su - vg : Vec<T, D>::zero();
     Vec<T, D> out;
     if (c.slip) {
       const Vec<T, D> n = load<D>(wp.normal, k);
@@ -339,7 +469,10 @@ struct FluidPressureGradient {
     Vec<T, D> r;
     const T F = c.w.f(pair_distance<T, D>(f.x, i, f.x, j, r));
     const T ri = f.rho(i), rj = f.rho(j);
-    acc -= (c.mass * (f.pressure(j) / (rj * rj) + f.pressure(i) / (ri * ri)) * F) * r;  // eq. (9) / rho_i
+    if (c.difference_gradient)
+      acc -= (c.mass * (f.pressure(j) - f.pressure(i)) / (rj * ri) * F) * r;
+    else
+      acc -= (c.mass * (f.pressure(j) / (rj * rj) + f.pressure(i) / (ri * ri)) * F) * r;  // eq. (9) / rho_i
   }
   // At a free-surface particle (p_i = 0) the sum of eq. (9) covers only the part of the kernel inside
   // the water, sum_j V_j p_j grad W_ij ~ (rho_i / rho0) grad p: it gives about half the hydrostatic
@@ -362,7 +495,8 @@ struct WallPressureCorrect {
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index i, Index k, Offset) const {
     Vec<T, D> r;
     const T F = c.w.f(pair_distance<T, D>(f.x, i, wp.x, k, r));
-    acc -= ((wp.p(k) + f.pressure(i)) * F * wp.vol(k)) * r;  // eq. (19)
+    const T pi = c.difference_gradient ? -f.pressure(i) : f.pressure(i);
+    acc -= ((wp.p(k) + pi) * F * wp.vol(k)) * r;  // eq. (19)
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, Accumulator& acc) const {
     const Vec<T, D> grad = load<D>(f.work, i) + acc;
@@ -374,15 +508,25 @@ struct WallPressureCorrect {
   KOKKOS_INLINE_FUNCTION static void join(Accumulator& a, const Accumulator& b) { a += b; }
 };
 
-// Wall reaction of pair (i, (c,m)), eqs. (39)-(41): the force the point gives particle i.
+// Wall reaction of pair (i, (c,m)), eqs. (39)-(41): the force the point gives particle i, its pressure
+// part (eq. (40)) and its viscous part (eq. (41)).
+template <class T, int D>
+KOKKOS_INLINE_FUNCTION void wall_pair_force_parts(const Fluid<T, D>& f, const WallPoints<T, D>& wp, const Params<T, D>& c,
+                                                  Index i, Index k, Vec<T, D>& pressure, Vec<T, D>& viscous) {
+  Vec<T, D> r;
+  const T F = c.w.f(pair_distance<T, D>(f.x, i, wp.x, k, r));
+  const T pi = c.difference_gradient ? -f.pressure(i) : f.pressure(i);
+  const Vec<T, D> gradp = (-(wp.p(k) + pi) * F * wp.vol(k)) * r;                         // eq. (40)
+  const Vec<T, D> lapu = (-T(2) * F * wp.vol(k)) * (load<D>(f.p.v, i) - load<D>(wp.u, k));  // eq. (41)
+  pressure = (-c.mass / c.rho0) * gradp;                                                 // eq. (39)
+  viscous = (c.mass * c.nu) * lapu;
+}
 template <class T, int D>
 KOKKOS_INLINE_FUNCTION Vec<T, D> wall_pair_force(const Fluid<T, D>& f, const WallPoints<T, D>& wp, const Params<T, D>& c,
                                                  Index i, Index k) {
-  Vec<T, D> r;
-  const T F = c.w.f(pair_distance<T, D>(f.x, i, wp.x, k, r));
-  const Vec<T, D> gradp = (-(wp.p(k) + f.pressure(i)) * F * wp.vol(k)) * r;                                  // eq. (40)
-  const Vec<T, D> lapu = (-T(2) * F * wp.vol(k)) * (load<D>(f.p.v, i) - load<D>(wp.u, k));                   // eq. (41)
-  return c.mass * ((T(-1) / c.rho0) * gradp + c.nu * lapu);                                                  // eq. (39)
+  Vec<T, D> fp, fv;
+  wall_pair_force_parts<T, D>(f, wp, c, i, k, fp, fv);
+  return fp + fv;
 }
 
 // The wall force on each fluid particle, f_i^wall = sum over its wall points, eq. (38).

@@ -92,6 +92,8 @@ class Isph {
     par_.g = Vec<T, D>::zero();
     par_.g[1] = T(-c.gravity);
     par_.slip = c.wall == WallCondition::slip;
+    par_.linear_ghosts = c.ghost_interpolation == GhostInterpolation::linear;
+    par_.difference_gradient = c.pressure_gradient == PressureGradient::difference;
     par_.surface_correction = c.surface_correction;
     build_fluid();
     build_walls();
@@ -108,6 +110,10 @@ class Isph {
   }
 
   void prepare() {}
+  // The smallest determinant of a ghost's neighbour covariance taken as regular (sph::GhostWeights).
+  T ghost_det_min() const {
+    return T(std::pow(1e-3 * cfg_.radius_factor * cfg_.radius_factor * cfg_.spacing * cfg_.spacing, D));
+  }
   void step() {
     sph::current_positions(f_);
     search_ff_.build(f_.x, par_.w.re, neighbors::ListKind::full, ff_);
@@ -115,6 +121,7 @@ class Isph {
     search_gf_.build_between(wp_.ghost, f_.x, par_.w.re, gf_);
     neighbors::for_each_row("polymech::sph::density_fluid", ff_, sph::FluidDensity<T, D>{f_, par_});
     neighbors::for_each_row("polymech::sph::density_wall", fw_, sph::WallDensity<T, D>{f_, wp_, par_});
+    neighbors::for_each_row("polymech::sph::ghost_weights", gf_, sph::GhostWeights<T, D>{f_, wp_, par_, ghost_det_min()});
     predict();
     neighbors::for_each_row("polymech::sph::ghost_velocity", gf_, sph::GhostVelocity<T, D>{f_, wp_, par_, f_.vstar});
     neighbors::for_each_row("polymech::sph::divergence_fluid", ff_, sph::FluidDivergence<T, D>{f_, par_});
@@ -290,7 +297,10 @@ class Isph {
           for (Offset k = list.begin(i); k < list.end(i); ++k) {
             const Index w = list.neighbor(k);
             if (w < begin) continue;
-            const Vec<T, D> fw = sph::wall_pair_force<T, D>(f, wp, c, i, w);
+            Vec<T, D> fw, fv;
+            sph::wall_pair_force_parts<T, D>(f, wp, c, i, w, fw, fv);
+            if (c.difference_gradient) fw = Vec<T, D>::zero();  // the pressure from body_surface_force
+            fw += fv;
             const double gx = -double(fw[0]), gy = -double(fw[1]);  // eq. (42)
             ax += gx;
             ay += gy;
@@ -301,6 +311,26 @@ class Isph {
     out[0] = fx;
     out[1] = fy;
     out[2] = mz;
+  }
+  // With the difference form of the pressure gradient the pair terms of eq. (40) are not the force between
+  // a particle and the wall (they need not sum to it: the form does not conserve momentum pair by pair), so
+  // the body's pressure force is the surface integral -oint p n_out ds over its circle, with p the fluid's
+  // pressure at the surface point of each outer-ring point (sph::SurfacePressure: the linear fit of the
+  // ghost's neighbours, 0 above the water), each point carrying the arc R dtheta of its cell. Adds to
+  // out[0..1]; a circle's pressure has no moment about its centre.
+  static void body_surface_force(const sph::WallPoints<T, D>& wp, const View1<T>& ps, Index begin, Index count,
+                                 double arc, double* out) {
+    double fx = 0, fy = 0;
+    Kokkos::parallel_reduce(
+        "polymech::sph::body_surface_force", range(count),
+        KOKKOS_LAMBDA(const Index k, double& ax, double& ay) {
+          const Index w = begin + k;
+          ax += double(ps(k)) * double(wp.normal(w, 0)) * arc;
+          ay += double(ps(k)) * double(wp.normal(w, 1)) * arc;
+        },
+        fx, fy);
+    out[0] += fx;
+    out[1] += fy;
   }
   static long long push_out_of_body(const sph::Fluid<T, D>& f, T cx, T cy, T rmin) {
     long long n = 0;
@@ -380,6 +410,13 @@ class Isph {
       auto& b = body_state_;
       double out[3];
       body_force(fw_, f_, wp_, par_, body_begin_, T(b.centre[0]), T(b.centre[1]), out);
+      if (par_.difference_gradient) {
+        neighbors::for_each_row("polymech::sph::surface_pressure", gf_,
+                                sph::SurfacePressure<T, D>{f_, wp_, par_, body_begin_, body_begin_ + body_outer_,
+                                                           ghost_det_min(), surface_p_});
+        const double arc = 3.14159265358979323846 * cfg_.body.diameter / double(body_outer_);
+        body_surface_force(wp_, surface_p_, body_begin_, body_outer_, arc, out);
+      }
       b.force[0] = out[0];
       b.force[1] = out[1];
       b.moment = out[2];
@@ -528,6 +565,7 @@ class Isph {
     wp_.p = View1<T>(pre + "p", m);
     wp_.u = VecView<T, D>(pre + "u", m);
     wp_.shepard = View1<T>(pre + "shepard", m);
+    wp_.interp = VecView<T, D + 1>(pre + "interp", m);
     auto hx = Kokkos::create_mirror_view(wp_.x);
     auto hv = Kokkos::create_mirror_view(wp_.vol);
     auto hn = Kokkos::create_mirror_view(wp_.normal);
@@ -558,6 +596,13 @@ class Isph {
         hv(tank_points + k) = T(cells_b.weight[k]);
       }
       Kokkos::deep_copy(body_offset_, ho);
+      // the outer ring (body_cells builds the rings from the outside in): the points at the first radius
+      const double r0 = std::hypot(cells_b.offset[0], cells_b.offset[1]);
+      body_outer_ = 0;
+      while (static_cast<std::size_t>(body_outer_) < cells_b.weight.size() &&
+             std::fabs(std::hypot(cells_b.offset[2 * body_outer_], cells_b.offset[2 * body_outer_ + 1]) - r0) < 1e-9 * r0)
+        ++body_outer_;
+      if (par_.difference_gradient) surface_p_ = View1<T>("polymech::isph::body_surface_pressure", body_outer_);
     }
     Kokkos::deep_copy(wp_.x, hx);
     Kokkos::deep_copy(wp_.vol, hv);
@@ -568,8 +613,9 @@ class Isph {
 
   Config cfg_;
   bool viscosity_ = false, stabilization_ = false, body_ = false;
-  Index body_begin_ = 0;
+  Index body_begin_ = 0, body_outer_ = 0;
   VecView<T, D> body_offset_;
+  View1<T> surface_p_;  // the fluid pressure at the body's surface points (difference form only)
   MassProperties props_;
   BodyContact bc_;
   // the tank as built: whole cells of l0 (tank sizes rounded to a multiple of the spacing), which the

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "common.hpp"
 
@@ -50,8 +51,11 @@ TEST(IsphBody, MassPropertiesByQuadratureOverTheCells) {
 
 // Eqs. (36)-(43): the force the model gives the body is the sum of the reactions at its integration
 // points, which is minus the wall force the body's points exert on the fluid, to round-off.
+// (The paper's symmetric form of the pressure gradient, where the reactions are the body's whole force.)
 TEST(IsphBody, BodyForceIsMinusTheWallForceOnTheFluid) {
   auto c = body_config(1.0, 0.1, 0.08);
+  c.pressure_gradient = ip::PressureGradient::symmetric;
+  c.ghost_interpolation = ip::GhostInterpolation::shepard;
   ip::Isph<double, 2> m(c);
   ASSERT_TRUE(m.has_body());
   for (int k = 0; k < 100; ++k) m.step();  // held until 0.1 s: the pressure settles
@@ -78,36 +82,107 @@ TEST(IsphBody, BodyForceIsMinusTheWallForceOnTheFluid) {
   EXPECT_NEAR(fb[0], 0.0, 0.05 * buoy);
 }
 
-// A neutrally buoyant cylinder (density ratio 1) placed in the water stays near where it is put:
-// released at 0.1 s, 0.3 s later.
-TEST(IsphBody, NeutralBuoyancyStaysPut) {
+// The fluid force on a cylinder held fully immersed (6 particles across, 2.5 diameters under the surface),
+// averaged over 0.2-0.4 s, against the buoyancy rho g pi R^2. The paper's form (symmetric gradient, eqs. (9)
+// and (19), Shepard ghosts, eq. (23)) lifts it by 4.4 % (measured; 8.5 % with linear ghosts, 14 % at
+// 2.2 x the depth): its error is proportional to the absolute pressure. The difference form with linear
+// ghosts and the surface integral of the pressure (the default): 1.65 % (measured; 0.01 % at 12 particles
+// across), docs/VALIDATION.md.
+static double held_body_force(ip::PressureGradient form, ip::GhostInterpolation ghosts, double water = 0.16,
+                              double l0 = 0.01) {
   auto c = body_config(1.0, 0.1, 0.08);
+  if (water != 0.16 || l0 != 0.01) {  // the same body 8 cm above the bottom in deeper water or finer particles
+    auto t = tank_config(2, l0, 0.2, water, 1e-3 * l0 / 0.01);
+    t.effects = c.effects;
+    t.body = c.body;
+    c = t;
+  }
+  c.body.release_time = 1.0;
+  c.pressure_gradient = form;
+  c.ghost_interpolation = ghosts;
+  ip::Isph<double, 2> m(c);
+  double sum = 0.0;
+  int n = 0;
+  const int steps = static_cast<int>(std::lround(0.4 / c.dt));
+  for (int k = 0; k < steps; ++k) {
+    m.step();
+    if (!m.health().finite) return 1e300;
+    if (k >= steps / 2) {
+      sum += m.body().force[1];
+      ++n;
+    }
+  }
+  return sum / n;
+}
+
+TEST(IsphBody, ImmersedBodyForceIsTheBuoyancy) {
+  const double buoy = 1000.0 * 9.8 * 3.14159265358979323846 * 0.03 * 0.03;
+  const double diff = held_body_force(ip::PressureGradient::difference, ip::GhostInterpolation::linear) / buoy - 1;
+  const double paper = held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard) / buoy - 1;
+  std::printf("held immersed body, force / buoyancy - 1: difference form %.4f, the paper's symmetric form %.4f\n", diff,
+              paper);
+  EXPECT_LT(std::fabs(diff), 0.025);
+  EXPECT_GT(paper, 2.0 * std::fabs(diff));
+}
+
+// The table of docs/VALIDATION.md (about 2 min; not run by ctest):
+//   build/ci/tests/isph/test_isph_body --gtest_also_run_disabled_tests --gtest_filter='*HeldBodyForceTable*'
+TEST(IsphBody, DISABLED_HeldBodyForceTable) {
+  const double buoy = 1000.0 * 9.8 * 3.14159265358979323846 * 0.03 * 0.03;
+  const double cases[4][2] = {{0.16, 0.01}, {0.23, 0.01}, {0.30, 0.01}, {0.16, 0.005}};
+  std::printf("| water [m] | l0 [m] | the paper's form | difference form |\n");
+  for (const auto& k : cases) {
+    const double paper = held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard, k[0], k[1]);
+    const double diff = held_body_force(ip::PressureGradient::difference, ip::GhostInterpolation::linear, k[0], k[1]);
+    auto cell = [&](double f) {
+      char b[64];
+      if (f > 1e100)
+        std::snprintf(b, sizeof b, "diverged");
+      else
+        std::snprintf(b, sizeof b, "%+.2f %%", 100 * (f / buoy - 1));
+      return std::string(b);
+    };
+    std::printf("| %.2f | %.3f | %s | %s |\n", k[0], k[1], cell(paper).c_str(), cell(diff).c_str());
+  }
+}
+
+// A neutrally buoyant cylinder (density ratio 1) placed in the water stays near where it is put:
+// released at 0.1 s, 0.3 s later; the drift in cylinder diameters.
+static double neutral_drift(ip::PressureGradient form, ip::GhostInterpolation ghosts) {
+  auto c = body_config(1.0, 0.1, 0.08);
+  c.pressure_gradient = form;
+  c.ghost_interpolation = ghosts;
   ip::Isph<double, 2> m(c);
   for (int k = 0; k < 400; ++k) {
     m.step();
-    ASSERT_TRUE(m.health().finite) << m.health().problem;
+    if (!m.health().finite) return 1e300;
     if (std::getenv("ISPH_TRACE") && k % 20 == 0)
       std::printf("t %.3f c (%.4f, %.4f) v (%.4f, %.4f) F (%.3f, %.3f) weight %.3f\n", m.time(), m.body().centre[0],
                   m.body().centre[1], m.body().v[0], m.body().v[1], m.body().force[0], m.body().force[1],
                   m.body_properties().mass * 9.8);
   }
   const auto& b = m.body();
-  const double drift = std::hypot(b.centre[0] - 0.1, b.centre[1] - 0.08);
-  std::printf("neutral body after 0.3 s: drift %.4f m = %.3f D, speed %.4f m/s\n", drift, drift / 0.06,
-              std::hypot(b.v[0], b.v[1]));
-  // The issue asks < 0.05 D in 5 s; this reduced case (6 particles across the body) drifts 0.07 D in 0.3 s
-  // (the pressure around the body is ~2-3 % above hydrostatic), docs/VALIDATION.md. The bound catches the
-  // coupling instability (plain CSS, added_mass = 0: 2 D in 0.3 s).
-  EXPECT_LT(drift, 0.1 * 0.06);
+  return std::hypot(b.centre[0] - 0.1, b.centre[1] - 0.08) / 0.06;
+}
+
+TEST(IsphBody, NeutralBuoyancyStaysPut) {
+  const double paper = neutral_drift(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard);
+  const double diff = neutral_drift(ip::PressureGradient::difference, ip::GhostInterpolation::linear);
+  std::printf("neutral body after 0.3 s: drift %.3f D (the paper's form), %.3f D (difference form)\n", paper, diff);
+  // Measured 0.068 D (the paper's form: its +4 % buoyancy lifts the body) and 0.014 D (difference form),
+  // docs/VALIDATION.md. The paper form's bound catches the coupling instability (plain CSS, added_mass = 0: 2 D).
+  EXPECT_LT(paper, 0.1);
+  EXPECT_LT(diff, 0.03);
 }
 
 // A body heavier than the water (density ratio 2) released just above the tank's bottom sinks onto it and
 // rests there through the shared Hertz-Mindlin contact (kernels/contact/hertz_mindlin.hpp): it does not
 // pass through the bottom, comes to rest, and the bottom carries at least its weight less its buoyancy.
-// Measured (1 thread): lowest gap -0.33 l0 while landing, -0.16 l0 at rest, contact force 85 N/m against
-// the net weight 27.7 N/m: the particles are squeezed out of the strip where the gap under the body is
-// below ~l0 (|x| < sqrt(2 R l0) = 2.4 cm), so the water presses on the body's top and not its bottom
-// (a sealed contact at this resolution; docs/VALIDATION.md).
+// Measured (1 thread, the paper's form): lowest gap -0.33 l0 while landing, -0.16 l0 at rest, contact force
+// 85 N/m against the net weight 27.7 N/m: the particles are squeezed out of the strip where the gap under
+// the body is below ~l0 (|x| < sqrt(2 R l0) = 2.4 cm), so the water presses on the body's top and not its
+// bottom (a sealed contact at this resolution). The difference form (pressure_gradient = "difference",
+// linear ghosts): contact force 26.0 N/m, gap -0.19 l0 landing, -0.07 l0 at rest (docs/VALIDATION.md).
 TEST(IsphBody, HeavyBodyRestsOnTheBottomWithoutPassingThrough) {
   auto c = body_config(2.0, 0.1, 0.035);  // R = 0.03: 5 mm above the bottom
   c.body.release_time = 0.05;
