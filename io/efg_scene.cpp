@@ -132,6 +132,7 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     if (!(out.dt <= 10 * c.h_max / cd))
       dyn->fail("dt", "= " + format_number(out.dt) + " s is above 10 h_max / c_d = " + format_number(10 * c.h_max / cd) +
                           " s: the step would not resolve the waves");
+    c.newmark_gamma = dyn->real("newmark_gamma", 0.5, Range{0.5, 1.0, false, false, "Newmark's gamma (0.5: the paper's average acceleration)"});
     c.growth_speed = dyn->real("growth_speed", 0.0, Range{0.0, 1e4, false, false, "m/s (0: a stationary crack)"});
     c.growth_start = dyn->real("growth_start", 0.0, Range{0.0, 1e3, false, false, "s"});
     c.final_crack_length = dyn->real("final_crack_length", c.crack_length, pl::length());

@@ -62,6 +62,10 @@ struct Config {
   // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack); the crack line
   // carries no node along the path (a node on it would be seen from both faces once the crack passed;
   // the background cells keep their edges on the line). growth_speed = 0: a stationary crack.
+  // Newmark's gamma: 0.5 with beta = 1/4 is the paper's average acceleration (no numerical damping);
+  // gamma > 0.5 with beta = (gamma + 1/2)^2 / 4 damps the highest frequencies (not in the paper: a test of
+  // how much of the running crack's noisy K is undamped high-frequency response, docs/VALIDATION.md).
+  double newmark_gamma = 0.5;
   double growth_start = 0.0;
   double growth_speed = 0.0;
   double final_crack_length = 0.0;

@@ -177,7 +177,12 @@ class Efg {
  public:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-  explicit Efg(const Config& c) : config_(c), layout_(make_layout(c)), initial_a_(c.crack_length) {
+  explicit Efg(const Config& c)
+      : config_(c),
+        layout_(make_layout(c)),
+        beta_(0.25 * (c.newmark_gamma + 0.5) * (c.newmark_gamma + 0.5)),
+        gamma_(c.newmark_gamma),
+        initial_a_(c.crack_length) {
     if (c.gauss < 1) throw std::invalid_argument("efg: gauss must be >= 1");
     nodes_ = detail::to_points<T>(layout_.nodes, 2, "polymech::efg::nodes");
     dm_ = View1<T>("polymech::efg::support_radius", layout_.dm.size());
@@ -337,6 +342,7 @@ class Efg {
   }
 
   // ---- dynamics: Newmark beta = 1/4, gamma = 1/2 in the incremental form of seed 004 eqs. (6)-(11) ----
+  // (config newmark_gamma > 1/2: beta = (gamma + 1/2)^2 / 4, numerically damped; gamma enters dv only)
 
   // Starts a run from rest under the load f (a Heaviside step at t = 0: a_0 = M^-1 f) and factorises the
   // effective stiffness K + M / (beta dt^2) once for this dt.
@@ -371,7 +377,7 @@ class Efg {
     const Eigen::VectorXd rhs = r + M_ * (vd_ * (1.0 / (b * dt)) + ad_ * (1.0 / (2 * b)));
     const Eigen::VectorXd du = keff_.solve(rhs);
     const Eigen::VectorXd da = du * (1.0 / (b * dt * dt)) - vd_ * (1.0 / (b * dt)) - ad_ * (1.0 / (2 * b));
-    vd_ += dt * ad_ + 0.5 * dt * da;
+    vd_ += dt * ad_ + gamma_ * dt * da;
     ud_ += du;
     ad_ += da;
     time_ += dt;
@@ -780,7 +786,7 @@ class Efg {
   SparseMatrix K_, M_;
   Eigen::VectorXd f_, ud_, vd_, ad_;
   Eigen::SimplicialLDLT<SparseMatrix> keff_;
-  double beta_ = 0.25, dt_ = 0.0, time_ = 0.0;
+  double beta_ = 0.25, gamma_ = 0.5, dt_ = 0.0, time_ = 0.0;
   std::int64_t step_ = 0;
   std::vector<ContourCache> contours_;
   double speed_ = 0.0;

@@ -61,6 +61,26 @@ TEST(EfgDynamic, EnergyIsConservedAndTheTipWaitsForTheWave) {
   EXPECT_LT(m.strain_energy(), 10 * work);  // bounded
 }
 
+// Newmark with gamma > 1/2 (config newmark_gamma, beta = (gamma + 1/2)^2 / 4) only removes energy: the
+// balance kinetic + strain - load work never rises above round-off and ends clearly below zero.
+TEST(EfgDynamic, NumericalDampingOnlyRemovesEnergy) {
+  auto c = coarse_chen_plate();
+  c.newmark_gamma = 0.6;
+  efg::Efg<double> m(c);
+  m.start_dynamic(0.2e-6);
+  double highest = -1e300, work = 0;
+  for (int s = 1; s <= 300; ++s) {
+    m.step();
+    const double e = m.kinetic_energy() + m.strain_energy() - m.load_work();
+    highest = std::max(highest, e);
+    work = std::max(work, std::abs(m.load_work()));
+  }
+  const double last = m.kinetic_energy() + m.strain_energy() - m.load_work();
+  std::printf("gamma 0.6: energy balance highest %.3e, last %.3e of the load work %.3e\n", highest, last, work);
+  EXPECT_LT(highest, 1e-9 * work);
+  EXPECT_LT(last, -1e-3 * work);
+}
+
 TEST(EfgDynamic, DynamicJPathsAgreeAfterTheWave) {
   const auto c = coarse_chen_plate();
   efg::Efg<double> m(c);
