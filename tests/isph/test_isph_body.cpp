@@ -89,14 +89,12 @@ TEST(IsphBody, BodyForceIsMinusTheWallForceOnTheFluid) {
 // ghosts and the surface integral of the pressure (the default): 1.65 % (measured; 0.01 % at 12 particles
 // across), docs/VALIDATION.md.
 static double held_body_force(ip::PressureGradient form, ip::GhostInterpolation ghosts, double water = 0.16,
-                              double l0 = 0.01) {
-  auto c = body_config(1.0, 0.1, 0.08);
-  if (water != 0.16 || l0 != 0.01) {  // the same body 8 cm above the bottom in deeper water or finer particles
-    auto t = tank_config(2, l0, 0.2, water, 1e-3 * l0 / 0.01);
-    t.effects = c.effects;
-    t.body = c.body;
-    c = t;
-  }
+                              double l0 = 0.01, double dt = 1e-3) {
+  auto c = body_config(1.0, 0.1, 0.08);  // the body 8 cm above the bottom, in `water` metres of water
+  auto t = tank_config(2, l0, 0.2, water, dt);
+  t.effects = c.effects;
+  t.body = c.body;
+  c = t;
   c.body.release_time = 1.0;
   c.pressure_gradient = form;
   c.ghost_interpolation = ghosts;
@@ -125,15 +123,17 @@ TEST(IsphBody, ImmersedBodyForceIsTheBuoyancy) {
   EXPECT_GT(paper, 2.0 * std::fabs(diff));
 }
 
-// The table of docs/VALIDATION.md (about 2 min; not run by ctest):
+// The table of docs/VALIDATION.md (about 5 min; not run by ctest):
 //   build/ci/tests/isph/test_isph_body --gtest_also_run_disabled_tests --gtest_filter='*HeldBodyForceTable*'
 TEST(IsphBody, DISABLED_HeldBodyForceTable) {
   const double buoy = 1000.0 * 9.8 * 3.14159265358979323846 * 0.03 * 0.03;
-  const double cases[4][2] = {{0.16, 0.01}, {0.23, 0.01}, {0.30, 0.01}, {0.16, 0.005}};
-  std::printf("| water [m] | l0 [m] | the paper's form | difference form |\n");
+  const double cases[8][3] = {{0.16, 0.01, 1e-3},  {0.16, 0.01, 5e-4},  {0.23, 0.01, 1e-3},   {0.23, 0.01, 5e-4},
+                              {0.30, 0.01, 1e-3},  {0.30, 0.01, 5e-4},  {0.16, 0.005, 5e-4}, {0.16, 0.005, 2.5e-4}};
+  std::printf("| water [m] | l0 [m] | dt [s] | the paper's form | difference form |\n");
   for (const auto& k : cases) {
-    const double paper = held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard, k[0], k[1]);
-    const double diff = held_body_force(ip::PressureGradient::difference, ip::GhostInterpolation::linear, k[0], k[1]);
+    const double paper =
+        held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard, k[0], k[1], k[2]);
+    const double diff = held_body_force(ip::PressureGradient::difference, ip::GhostInterpolation::linear, k[0], k[1], k[2]);
     auto cell = [&](double f) {
       char b[64];
       if (f > 1e100)
@@ -142,7 +142,7 @@ TEST(IsphBody, DISABLED_HeldBodyForceTable) {
         std::snprintf(b, sizeof b, "%+.2f %%", 100 * (f / buoy - 1));
       return std::string(b);
     };
-    std::printf("| %.2f | %.3f | %s | %s |\n", k[0], k[1], cell(paper).c_str(), cell(diff).c_str());
+    std::printf("| %.2f | %.3f | %.2g | %s | %s |\n", k[0], k[1], k[2], cell(paper).c_str(), cell(diff).c_str());
   }
 }
 
