@@ -9,15 +9,16 @@
 namespace polymech::isph {
 
 enum class WallCondition { no_slip, slip };  // eqs. (29)-(30) / (27)-(28)
-// Values at the ghost points: a linear fit over the ghost's neighbours (default; exact for the hydrostatic
-// pressure) or the paper's Shepard interpolation, eq. (23) (biased near a wall by a fraction of l0).
+// Values at the ghost points: the paper's Shepard interpolation, eq. (23) (default; biased near a wall by a
+// fraction of l0), or a linear least-squares fit over the ghost's neighbours (exact for a linear field).
 enum class GhostInterpolation { linear, shepard };
 // The pressure gradient of the projection: the paper's symmetric form, eqs. (9) and (19), with (p_j + p_i)
-// and (p_c + p_i): momentum exchanged pair by pair, the body's force the sum of its points' reactions (eqs.
-// (38)-(43)), but not zero for a constant pressure on an irregular particle set (an error proportional to
-// the absolute pressure: +4 to +14 % buoyancy on an immersed cylinder, growing with its depth); or the
-// difference form with (p_j - p_i) and (p_c - p_i) (default): exact for a constant pressure, the body's
-// pressure force then the integral of the wall pressure over its surface (docs/METHODS.md).
+// and (p_c + p_i) (default): momentum exchanged pair by pair, the body's force the sum of its points'
+// reactions (eqs. (38)-(43)), but not zero for a constant pressure on an irregular particle set (a force
+// error growing with the absolute pressure and with dt / l0: +0.9 to +4.4 % buoyancy on an immersed
+// cylinder); or the difference form with (p_j - p_i) and (p_c - p_i): exact for a constant pressure, the
+// body's pressure force then the integral of the fluid pressure over its surface, but unstable in the
+// floating runs (docs/VALIDATION.md, ISPH stage 4).
 enum class PressureGradient { difference, symmetric };
 
 // A floating circular cylinder (2D) of IGCB cells (effect `rigid_body`, eqs. (31)-(43)).
