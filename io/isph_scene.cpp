@@ -43,12 +43,13 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   c.dim = static_cast<int>(s.model.integer("dimension", 2, 2, 3));
   c.wall = s.model.choice("wall", {"no_slip", "slip"}, "no_slip") == "slip" ? isph::WallCondition::slip
                                                                             : isph::WallCondition::no_slip;
-  c.ghost_interpolation = s.model.choice("ghost_interpolation", {"linear", "shepard"}, "linear") == "shepard"
-                              ? isph::GhostInterpolation::shepard
-                              : isph::GhostInterpolation::linear;
-  c.pressure_gradient = s.model.choice("pressure_gradient", {"difference", "symmetric"}, "difference") == "symmetric"
-                            ? isph::PressureGradient::symmetric
-                            : isph::PressureGradient::difference;
+  // defaults: the paper's forms (as isph::Config's); the others are options (docs/VALIDATION.md, stage 4)
+  c.ghost_interpolation = s.model.choice("ghost_interpolation", {"shepard", "linear"}, "shepard") == "linear"
+                              ? isph::GhostInterpolation::linear
+                              : isph::GhostInterpolation::shepard;
+  c.pressure_gradient = s.model.choice("pressure_gradient", {"symmetric", "difference"}, "symmetric") == "difference"
+                            ? isph::PressureGradient::difference
+                            : isph::PressureGradient::symmetric;
   if (c.effects.has("rigid_body") && c.dim != 2) s.model.fail("effects", "lists \"rigid_body\": the body is 2D only");
   s.model.finish();
   out.header.set_accuracy(read_accuracy(root, accuracy, 0.0, "paper"));

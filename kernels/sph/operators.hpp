@@ -158,7 +158,10 @@ struct GhostWeights {
   KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index k, Index j, Offset) const {
     Vec<T, D> r;
     const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
-    acc.add(wv, -r);  // r_j = x_j - x_g
+    if (c.linear_ghosts)
+      acc.add(wv, -r);  // r_j = x_j - x_g
+    else
+      acc.s += wv;  // Shepard needs only the sum
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index k, Accumulator& acc) const {
     for (int d = 0; d <= D; ++d) wp.interp(k, d) = T(0);

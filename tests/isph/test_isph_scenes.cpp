@@ -65,9 +65,18 @@ TEST(IsphScenes, BaseLoads) {
   EXPECT_EQ(s.case_name, "dam_break");
   EXPECT_EQ(s.steps, 200);
   EXPECT_EQ(s.cost.items, 200.0);
+  // without the keys, the paper's forms (eqs. (9), (19) and (23)); the others only when asked for
+  EXPECT_EQ(s.config.pressure_gradient, polymech::isph::PressureGradient::symmetric);
+  EXPECT_EQ(s.config.ghost_interpolation, polymech::isph::GhostInterpolation::shepard);
+  const auto o = io::load_isph_scene(dir.write(
+      "options.toml", replace_once(kBase, "[model]", "[model]\npressure_gradient = \"difference\"\nghost_interpolation = \"linear\"")));
+  EXPECT_EQ(o.config.pressure_gradient, polymech::isph::PressureGradient::difference);
+  EXPECT_EQ(o.config.ghost_interpolation, polymech::isph::GhostInterpolation::linear);
 }
 
 TEST(IsphScenes, BadValuesAreRefused) {
+  expect_error(replace_once(kBase, "[model]", "[model]\npressure_gradient = \"sum\""), "pressure_gradient",
+               {"model.pressure_gradient", "symmetric", "difference"});
   expect_error(replace_once(kBase, "dt = 5e-4", "dt = 5e-3"), "dt = 5e-3", {"time.dt", "above the limit"});
   expect_error(replace_once(kBase, "water_width = 0.1", "water_width = 0.5"), "water_width = 0.5",
                {"tank.water_width", "larger than the tank"});
