@@ -136,6 +136,8 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     c.growth_speed = dyn->real("growth_speed", 0.0, Range{0.0, 1e4, false, false, "m/s (0: a stationary crack)"});
     c.growth_start = dyn->real("growth_start", 0.0, Range{0.0, 1e3, false, false, "s"});
     c.final_crack_length = dyn->real("final_crack_length", c.crack_length, pl::length());
+    // true: nodes on the crack path, split as the tip passes them (the paper's Model 4); false: none there
+    c.path_nodes = dyn->boolean("path_nodes", false);
     if (c.growth_speed > 0) {
       const double cs = std::sqrt(mu / c.density);
       if (!(c.growth_speed < 0.9 * cs)) dyn->fail("growth_speed", "must be below 0.9 c_s = " + format_number(0.9 * cs) + " m/s");

@@ -52,12 +52,16 @@ def main():
     if os.path.exists(run):
         h = read(run)
         fig, ax = plt.subplots(figsize=(6, 4.2))
-        ax.plot(h["t_us"], h["K_factor_mean"], label="running (1000 m/s from 4.4 us)")
+        ax.plot(h["t_us"], h["K_factor_mean"], label="running (1000 m/s from 4.4 us), nodes on the path (the paper's)")
+        nopath = os.path.join(d, "chen_running_nopath_sif_history.csv")
+        if os.path.exists(nopath):
+            hn = read(nopath)
+            ax.plot(hn["t_us"], hn["K_factor_mean"], ":", label="running, no nodes on the path")
         name, hs, s = runs[-1]
         ax.plot(hs["t_us"], hs["K_factor_mean"], "--", label="stationary")
         ax.set(xlabel="t [us]", ylabel="K / (sigma sqrt(pi a0))", title="Chen's plate, EFG")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=8, loc="upper left")
         fig.tight_layout()
         out = os.path.join(d, "chen_running.png")
         fig.savefig(out, dpi=110)

@@ -59,9 +59,12 @@ struct Config {
   // (docs/METHODS.md, 'J-integral band').
   double j_band = 0.0;
   // Crack growth at a prescribed speed (seed 004 §3.3): from t = growth_start [s] both tips run at
-  // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack); the crack line
-  // carries no node along the path (a node on it would be seen from both faces once the crack passed;
-  // the background cells keep their edges on the line). growth_speed = 0: a stationary crack.
+  // growth_speed [m/s] up to final_crack_length (the half-length for a centre crack). growth_speed = 0: a
+  // stationary crack. path_nodes = false: the crack line carries no node along the path (a node on it
+  // would be seen from both faces once the crack passed; the background cells keep their edges on the
+  // line). path_nodes = true (the paper's Model 4, whose nodes follow the physical shape, §3.3): a node
+  // on every node line along the path, split in two (one on each face, the same coefficients) when the
+  // tip passes it.
   // Newmark's gamma: 0.5 with beta = 1/4 is the paper's average acceleration (no numerical damping);
   // gamma > 0.5 with beta = (gamma + 1/2)^2 / 4 damps the highest frequencies (not in the paper: a test of
   // how much of the running crack's noisy K is undamped high-frequency response, docs/VALIDATION.md).
@@ -69,6 +72,7 @@ struct Config {
   double growth_start = 0.0;
   double growth_speed = 0.0;
   double final_crack_length = 0.0;
+  bool path_nodes = false;
   EffectSet effects;
 };
 

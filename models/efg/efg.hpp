@@ -184,14 +184,8 @@ class Efg {
         gamma_(c.newmark_gamma),
         initial_a_(c.crack_length) {
     if (c.gauss < 1) throw std::invalid_argument("efg: gauss must be >= 1");
-    nodes_ = detail::to_points<T>(layout_.nodes, 2, "polymech::efg::nodes");
-    dm_ = View1<T>("polymech::efg::support_radius", layout_.dm.size());
-    auto hd = Kokkos::create_mirror_view(dm_);
-    for (std::size_t i = 0; i < layout_.dm.size(); ++i) {
-      hd(i) = static_cast<T>(layout_.dm[i]);
-      max_dm_ = std::max(max_dm_, layout_.dm[i]);
-    }
-    Kokkos::deep_copy(dm_, hd);
+    upload_nodes();
+    for (const double d : layout_.dm) max_dm_ = std::max(max_dm_, d);
     crack_ = mls::Segments<T>("polymech::efg::crack", layout_.crack.size() / 4);
     auto hc = Kokkos::create_mirror_view(crack_);
     for (std::size_t s = 0; s < layout_.crack.size() / 4; ++s)
@@ -532,6 +526,7 @@ class Efg {
       layout_.crack[2] = a;
     }
     layout_.tip_x = a;
+    split_passed_nodes();
     auto hc = Kokkos::create_mirror_view(crack_);
     for (std::size_t s = 0; s < layout_.crack.size() / 4; ++s)
       for (int k = 0; k < 4; ++k) hc(s, k) = static_cast<T>(layout_.crack[4 * s + static_cast<std::size_t>(k)]);
@@ -544,6 +539,8 @@ class Efg {
     if (keff_.info() != Eigen::Success) throw std::runtime_error("EFG: the effective stiffness factorisation failed");
   }
   double crack_length() const { return config_.crack_length; }
+  // Nodes added by splitting path nodes the tip has passed (Config::path_nodes).
+  Index split_nodes() const { return split_nodes_; }
 
   // Crack opening at x of the current (dynamic or static) solution.
   double dynamic_opening_at(double x) {
@@ -718,6 +715,59 @@ class Efg {
     return r;
   }
 
+  // A node on the crack line (y = 0 exactly: a path node of Config::path_nodes) that the crack now
+  // covers would be seen from both faces and tie them together: it becomes two, the node itself moved
+  // onto the upper face and a twin on the lower one (y = +- Layout::face_offset, as the layout puts
+  // crack-face nodes), same support radius, the twin appended with a copy of the node's u, v, a
+  // coefficients (the field is continuous there until the faces separate). A node at the tip (within
+  // 1e-9 h_min) stays whole: the visibility criterion lets a segment through the tip see it.
+  void split_passed_nodes() {
+    const double a = config_.crack_length, tol = 1e-9 * config_.h_min, eps = layout_.face_offset;
+    if (config_.crack == CrackKind::none) return;
+    std::vector<std::size_t> passed;
+    for (std::size_t i = 0; i < layout_.node_count(); ++i) {
+      const double x = layout_.nodes[2 * i], y = layout_.nodes[2 * i + 1];
+      const double ax = config_.crack == CrackKind::centre ? std::abs(x) : x;
+      if (y == 0.0 && ax < a - tol) passed.push_back(i);
+    }
+    if (passed.empty()) return;
+    // twins appended in the order the tips pass them (|x|, then x), so a restart that splits all the
+    // passed nodes at once numbers them as the run that split them step by step did
+    std::sort(passed.begin(), passed.end(), [&](std::size_t i, std::size_t j) {
+      const double xi = layout_.nodes[2 * i], xj = layout_.nodes[2 * j];
+      const double ai = config_.crack == CrackKind::centre ? std::abs(xi) : xi, aj = config_.crack == CrackKind::centre ? std::abs(xj) : xj;
+      return ai < aj || (ai == aj && xi < xj);
+    });
+    const Eigen::Index n0 = static_cast<Eigen::Index>(2 * layout_.node_count());
+    for (const std::size_t i : passed) {
+      layout_.nodes[2 * i + 1] = eps;
+      layout_.nodes.insert(layout_.nodes.end(), {layout_.nodes[2 * i], -eps});
+      layout_.dm.push_back(layout_.dm[i]);
+    }
+    const auto grow = [&](Eigen::VectorXd& x) {
+      if (x.size() != n0) return;  // not started: start_dynamic sizes it
+      x.conservativeResize(n0 + static_cast<Eigen::Index>(2 * passed.size()));
+      for (std::size_t k = 0; k < passed.size(); ++k)
+        for (int c = 0; c < 2; ++c)
+          x(n0 + static_cast<Eigen::Index>(2 * k) + c) = x(static_cast<Eigen::Index>(2 * passed[k]) + c);
+    };
+    grow(ud_);
+    grow(vd_);
+    grow(ad_);
+    split_nodes_ += static_cast<Index>(passed.size());
+    upload_nodes();
+    if (ud_.size() == static_cast<Eigen::Index>(2 * layout_.node_count())) sync_dynamic();
+  }
+
+  // The layout's node positions and support radii to the device.
+  void upload_nodes() {
+    nodes_ = detail::to_points<T>(layout_.nodes, 2, "polymech::efg::nodes");
+    dm_ = View1<T>("polymech::efg::support_radius", layout_.dm.size());
+    auto hd = Kokkos::create_mirror_view(dm_);
+    for (std::size_t i = 0; i < layout_.dm.size(); ++i) hd(i) = static_cast<T>(layout_.dm[i]);
+    Kokkos::deep_copy(dm_, hd);
+  }
+
   static void to_device(const Eigen::VectorXd& x, View1<T>& v, const char* label) {
     if (v.extent(0) != static_cast<std::size_t>(x.size())) v = View1<T>(std::string(label), static_cast<std::size_t>(x.size()));
     auto h = Kokkos::create_mirror_view(v);
@@ -795,6 +845,7 @@ class Efg {
   bool cod_ready_ = false;
   double cod_x_ = 0.0;
   bool prescribed_growth_ = false;
+  Index split_nodes_ = 0;
   models::StateRegistry no_views_;
 };
 

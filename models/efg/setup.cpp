@@ -144,14 +144,15 @@ double smallest_interval(const std::vector<double>& xs, const std::vector<double
   return h;
 }
 // The nodes make_layout puts where the node lines x and y = 0 cross: none on the path of a growing crack
-// (a node there would be seen from both faces once the crack has passed it), two on the crack (one on
-// each face), one elsewhere.
+// (a node there would be seen from both faces once the crack has passed it) unless Config::path_nodes
+// (then one, split by the model when the tip passes it), two on the crack (one on each face), one
+// elsewhere.
 int crack_line_nodes(const Config& c, double hmin_all, double x) {
   const double a = c.crack_length;
   const bool growing = c.growth_speed > 0 && c.final_crack_length > a;
   const double ax = c.crack == CrackKind::centre ? std::abs(x) : x;
   if (c.crack == CrackKind::none) return 1;
-  if (growing && ax > a - 1e-9 * hmin_all && ax < c.final_crack_length - 1e-9 * hmin_all) return 0;
+  if (growing && ax > a - 1e-9 * hmin_all && ax < c.final_crack_length - 1e-9 * hmin_all) return c.path_nodes ? 1 : 0;
   if (c.crack == CrackKind::edge && x < a - 1e-9 * hmin_all) return 2;
   if (c.crack == CrackKind::centre && std::abs(x) < a - 1e-9 * hmin_all) return 2;
   return 1;
@@ -180,6 +181,7 @@ Layout make_layout(const Config& c) {
   const double a = c.crack_length;
   const double hmin_all = smallest_interval(xs, ys);
   const double eps = 1e-7 * hmin_all;  // crack-face nodes sit this far off the face, on their side
+  L.face_offset = eps;
   auto local = [](const std::vector<double>& v, std::size_t i) {
     double h = 0.0;
     if (i > 0) h = std::max(h, v[i] - v[i - 1]);

@@ -21,6 +21,7 @@ struct Layout {
   std::vector<double> penalty;      // x, y, stiffness, component (0, 1), value per penalty point
   std::vector<double> crack;        // x0, y0, x1, y1 per crack segment
   double tip_x = 0.0, tip_y = 0.0;  // the tip the J-integral is taken at
+  double face_offset = 0.0;         // crack-face nodes sit this far off the face (y = +- face_offset)
   std::size_t node_count() const { return dm.size(); }
   std::size_t quad_count() const { return quad.size() / 3; }
 };
