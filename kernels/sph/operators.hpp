@@ -34,6 +34,7 @@ struct Fluid {
   View1<T> inv_diag;    // Jacobi scaling of the PPE rows
   View1<T> scratch;     // scalar scratch (fluid part of the PPE operator, divergence)
   Flags surface;        // 1: free-surface particle (p = 0)
+  View1<T> divr;        // divergence of position (Params::divergence_surface only)
   Index size() const { return p.size(); }
 };
 
@@ -66,6 +67,8 @@ struct Params {
   Vec<T, D> g;
   bool slip = false;  // eqs. (27)-(28) instead of (29)-(30)
   bool difference_gradient = false;  // grad p by (p_j - p_i), (p_c - p_i) instead of eqs. (9), (19)
+  bool divergence_surface = false;  // free surface by the divergence of position (< surface_divr), not the density
+  T surface_divr = T(1.5);
   bool linear_ghosts = true;  // ghost values by a linear fit (exact for a hydrostatic field); false: Shepard, eq. (23)
   bool surface_correction = true;  // free-surface particles: eq. (9) divided by rho_i / rho0 (the kernel's
                                    // share inside the fluid), see FluidPressureGradient
@@ -107,7 +110,44 @@ struct WallDensity {
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const {
     const T rho = f.rho(i) + c.rho0 * acc;  // eq. (18)
     f.rho(i) = rho;
-    f.surface(i) = rho < c.beta * c.rho0 ? 1 : 0;
+    if (!c.divergence_surface) f.surface(i) = rho < c.beta * c.rho0 ? 1 : 0;
+  }
+  KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
+};
+
+// Divergence of position, div r_i = sum_j V_j (x_j - x_i) . grad_i W_ij = sum_j V_j F_ij |r_ij|^2 (F = -W'/r) over the
+// fluid (V_j = m / rho_j, after the density passes) and then the wall points (V = H |J|); the wall pass
+// flags the free surface, div r_i < surface_divr (Lee et al. 2008; Params::divergence_surface).
+template <class T, int D>
+struct FluidPositionDivergence {
+  Fluid<T, D> f;
+  Params<T, D> c;
+  using Accumulator = T;
+  KOKKOS_INLINE_FUNCTION T start(Index) const { return T(0); }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index j, Offset) const {
+    Vec<T, D> r;
+    const T d = pair_distance<T, D>(f.x, i, f.x, j, r);
+    acc += c.mass / f.rho(j) * c.w.f(d) * d * d;
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const { f.divr(i) = acc; }
+  KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
+};
+template <class T, int D>
+struct WallPositionDivergence {
+  Fluid<T, D> f;
+  WallPoints<T, D> wp;
+  Params<T, D> c;
+  using Accumulator = T;
+  KOKKOS_INLINE_FUNCTION T start(Index) const { return T(0); }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index k, Offset) const {
+    Vec<T, D> r;
+    const T d = pair_distance<T, D>(f.x, i, wp.x, k, r);
+    acc += wp.vol(k) * c.w.f(d) * d * d;
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const {
+    const T divr = f.divr(i) + acc;
+    f.divr(i) = divr;
+    f.surface(i) = (divr < c.surface_divr && f.rho(i) < c.rho0) ? 1 : 0;
   }
   KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
 };

@@ -20,6 +20,15 @@ enum class GhostInterpolation { linear, shepard };
 // body's pressure force then the integral of the fluid pressure over its surface, but unstable in the
 // floating runs (docs/VALIDATION.md, ISPH stage 4).
 enum class PressureGradient { difference, symmetric };
+// Free-surface particles (p = 0): where the summation density (fluid + walls, eqs. (13), (18)) is below
+// surface_threshold x rho0; or where the divergence of position, sum_j V_j (x_j - x_i) . grad W_ij over
+// fluid and wall points (d inside the water, about d/2 at a flat surface), is below surface_divergence
+// and the density below rho0 (Lee et al. 2008's test, with the density cap so that a surface layer
+// pressed onto the one below gets a pressure and is pushed off it; the paper does not say how it detects
+// the surface). The density test alone is fooled when the top layer compacts onto the one below (its
+// density rises back over the threshold although nothing lies above it: the surface loses its p = 0
+// there, docs/VALIDATION.md); the position divergence measures the missing part of the support.
+enum class SurfaceDetection { density, divergence };
 
 // A floating circular cylinder (2D) of IGCB cells (effect `rigid_body`, eqs. (31)-(43)).
 struct Body {
@@ -46,6 +55,8 @@ struct Config {
   double alpha = 5e-3;              // density relaxation, eq. (4) (used when `stabilization` is on)
   double dt = 5e-4;                 // [s]
   double surface_threshold = 0.9;   // beta: free surface where rho_i < beta rho^0
+  SurfaceDetection surface_detection = SurfaceDetection::density;
+  double surface_divergence = 0.0;  // divergence test: free surface where div r < this (0: 1.5 in 2D, 2.4 in 3D)
   double tank[3] = {0.2, 0.2, 0.2};   // inner size of the tank: x, y (height), z (3D); walls below and on the sides
   double fluid[3] = {0.2, 0.1, 0.2};  // the initial water block, from the tank's lower corner (x = 0, y = 0)
   bool surface_correction = true;   // renormalised eq. (9) at free-surface particles (false: as printed)

@@ -94,6 +94,8 @@ class Isph {
     par_.slip = c.wall == WallCondition::slip;
     par_.linear_ghosts = c.ghost_interpolation == GhostInterpolation::linear;
     par_.difference_gradient = c.pressure_gradient == PressureGradient::difference;
+    par_.divergence_surface = c.surface_detection == SurfaceDetection::divergence;
+    par_.surface_divr = T(c.surface_divergence > 0 ? c.surface_divergence : (D == 2 ? 1.5 : 2.4));
     par_.surface_correction = c.surface_correction;
     build_fluid();
     build_walls();
@@ -121,6 +123,10 @@ class Isph {
     search_gf_.build_between(wp_.ghost, f_.x, par_.w.re, gf_);
     neighbors::for_each_row("polymech::sph::density_fluid", ff_, sph::FluidDensity<T, D>{f_, par_});
     neighbors::for_each_row("polymech::sph::density_wall", fw_, sph::WallDensity<T, D>{f_, wp_, par_});
+    if (par_.divergence_surface) {
+      neighbors::for_each_row("polymech::sph::position_divergence_fluid", ff_, sph::FluidPositionDivergence<T, D>{f_, par_});
+      neighbors::for_each_row("polymech::sph::position_divergence_wall", fw_, sph::WallPositionDivergence<T, D>{f_, wp_, par_});
+    }
     neighbors::for_each_row("polymech::sph::ghost_weights", gf_, sph::GhostWeights<T, D>{f_, wp_, par_, ghost_det_min()});
     predict();
     neighbors::for_each_row("polymech::sph::ghost_velocity", gf_, sph::GhostVelocity<T, D>{f_, wp_, par_, f_.vstar});
@@ -516,6 +522,7 @@ class Isph {
     f_.inv_diag = View1<T>("polymech::isph::inv_diag", size);
     f_.scratch = View1<T>("polymech::isph::scratch", size);
     f_.surface = sph::Flags("polymech::isph::surface", size);
+    if (par_.divergence_surface) f_.divr = View1<T>("polymech::isph::position_divergence", size);
     diag_ = View1<T>("polymech::isph::diag", size);
     auto h = Kokkos::create_mirror_view(f_.p.x0);
     for (std::size_t i = 0; i < size; ++i)

@@ -2,6 +2,7 @@
 // body's cells, the momentum exchange through its integration points, and a neutrally buoyant cylinder.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -89,7 +90,8 @@ TEST(IsphBody, BodyForceIsMinusTheWallForceOnTheFluid) {
 // ghosts and the surface integral of the pressure (the default): 1.65 % (measured; 0.01 % at 12 particles
 // across), docs/VALIDATION.md.
 static double held_body_force(ip::PressureGradient form, ip::GhostInterpolation ghosts, double water = 0.16,
-                              double l0 = 0.01, double dt = 1e-3) {
+                              double l0 = 0.01, double dt = 1e-3,
+                              ip::SurfaceDetection surface = ip::SurfaceDetection::density) {
   auto c = body_config(1.0, 0.1, 0.08);  // the body 8 cm above the bottom, in `water` metres of water
   auto t = tank_config(2, l0, 0.2, water, dt);
   t.effects = c.effects;
@@ -98,6 +100,7 @@ static double held_body_force(ip::PressureGradient form, ip::GhostInterpolation 
   c.body.release_time = 1.0;
   c.pressure_gradient = form;
   c.ghost_interpolation = ghosts;
+  c.surface_detection = surface;
   ip::Isph<double, 2> m(c);
   double sum = 0.0;
   int n = 0;
@@ -129,11 +132,13 @@ TEST(IsphBody, DISABLED_HeldBodyForceTable) {
   const double buoy = 1000.0 * 9.8 * 3.14159265358979323846 * 0.03 * 0.03;
   const double cases[8][3] = {{0.16, 0.01, 1e-3},  {0.16, 0.01, 5e-4},  {0.23, 0.01, 1e-3},   {0.23, 0.01, 5e-4},
                               {0.30, 0.01, 1e-3},  {0.30, 0.01, 5e-4},  {0.16, 0.005, 5e-4}, {0.16, 0.005, 2.5e-4}};
-  std::printf("| water [m] | l0 [m] | dt [s] | the paper's form | difference form |\n");
+  std::printf("| water [m] | l0 [m] | dt [s] | the paper's form | difference form | the paper's form, divergence surface |\n");
   for (const auto& k : cases) {
     const double paper =
         held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard, k[0], k[1], k[2]);
     const double diff = held_body_force(ip::PressureGradient::difference, ip::GhostInterpolation::linear, k[0], k[1], k[2]);
+    const double divr = held_body_force(ip::PressureGradient::symmetric, ip::GhostInterpolation::shepard, k[0], k[1], k[2],
+                                        ip::SurfaceDetection::divergence);
     auto cell = [&](double f) {
       char b[64];
       if (f > 1e100)
@@ -142,8 +147,53 @@ TEST(IsphBody, DISABLED_HeldBodyForceTable) {
         std::snprintf(b, sizeof b, "%+.2f %%", 100 * (f / buoy - 1));
       return std::string(b);
     };
-    std::printf("| %.2f | %.3f | %.2g | %s | %s |\n", k[0], k[1], k[2], cell(paper).c_str(), cell(diff).c_str());
+    std::printf("| %.2f | %.3f | %.2g | %s | %s | %s |\n", k[0], k[1], k[2], cell(paper).c_str(), cell(diff).c_str(),
+                cell(divr).c_str());
+    std::fflush(stdout);
   }
+}
+
+// A cylinder held with its lowest point on the free surface (floating_cylinder_small at D/l0 = 4): the top
+// layer of water compacts onto the one below until its summation density hovers at the surface threshold
+// (0.95 rho0); with the density test a stretch of it then loses its p = 0 (no surface particle above
+// it), its pressure swings from step to step with growing amplitude and the water blows up at about
+// 0.7 s (measured: max speed 5.8 m/s at 0.8 s, 8 983 put-backs by 3 s; docs/VALIDATION.md). With the
+// divergence-of-position test (SurfaceDetection::divergence) the top layer stays flagged and the water
+// settles (0.10 m/s at 0.7 s, 0.02 m/s at 3 s).
+static double held_at_surface_max_speed(ip::SurfaceDetection surface, double until) {
+  auto c = tank_config(2, 0.025, 0.5, 0.3, 1e-3);
+  c.tank[1] = 0.45;
+  c.surface_threshold = 0.95;
+  c.surface_detection = surface;
+  c.effects = pm::EffectSet::resolve({"viscosity", "stabilization", "rigid_body"}, ip::effect_table());
+  c.body.diameter = 0.1;
+  c.body.centre[0] = 0.25;
+  c.body.centre[1] = 0.35;
+  c.body.density_ratio = 0.8;
+  c.body.release_time = 100.0;  // held
+  ip::Isph<double, 2> m(c);
+  double vmax = 0.0;
+  const int steps = static_cast<int>(std::lround(until / c.dt));
+  for (int k = 0; k < steps; ++k) {
+    m.step();
+    if (!m.health().finite) return 1e300;
+    if (k >= steps - 100) {  // the last 0.1 s
+      const auto v = m.host_velocities();
+      for (std::size_t i = 0; i < v.size() / 2; ++i) vmax = std::max(vmax, std::hypot(v[2 * i], v[2 * i + 1]));
+    }
+  }
+  return vmax;
+}
+
+TEST(IsphBody, HeldAtTheSurfaceStaysCalmWithTheDivergenceSurface) {
+  const double divr = held_at_surface_max_speed(ip::SurfaceDetection::divergence, 0.9);
+  std::printf("held at the surface, max speed over 0.8-0.9 s: %.3f m/s (divergence surface)\n", divr);
+  EXPECT_LT(divr, 0.3);  // measured 0.15
+}
+// The density test on the same case (not run by ctest; --gtest_also_run_disabled_tests).
+TEST(IsphBody, DISABLED_HeldAtTheSurfaceWithTheDensitySurface) {
+  const double dens = held_at_surface_max_speed(ip::SurfaceDetection::density, 0.9);
+  std::printf("held at the surface, max speed over 0.8-0.9 s: %.3f m/s (density surface)\n", dens);
 }
 
 // A neutrally buoyant cylinder (density ratio 1) placed in the water stays near where it is put:

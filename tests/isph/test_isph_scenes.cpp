@@ -72,11 +72,18 @@ TEST(IsphScenes, BaseLoads) {
       "options.toml", replace_once(kBase, "[model]", "[model]\npressure_gradient = \"difference\"\nghost_interpolation = \"linear\"")));
   EXPECT_EQ(o.config.pressure_gradient, polymech::isph::PressureGradient::difference);
   EXPECT_EQ(o.config.ghost_interpolation, polymech::isph::GhostInterpolation::linear);
+  EXPECT_EQ(s.config.surface_detection, polymech::isph::SurfaceDetection::density);
+  const auto d = io::load_isph_scene(dir.write("divr.toml", replace_once(kBase, "[fluid]", "[fluid]\nsurface_detection = \"divergence\"")));
+  EXPECT_EQ(d.config.surface_detection, polymech::isph::SurfaceDetection::divergence);
 }
 
 TEST(IsphScenes, BadValuesAreRefused) {
   expect_error(replace_once(kBase, "[model]", "[model]\npressure_gradient = \"sum\""), "pressure_gradient",
                {"model.pressure_gradient", "symmetric", "difference"});
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nsurface_detection = \"curvature\""), "surface_detection",
+               {"fluid.surface_detection", "density", "divergence"});
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nsurface_divergence = 7.0"), "surface_divergence",
+               {"fluid.surface_divergence"});
   expect_error(replace_once(kBase, "dt = 5e-4", "dt = 5e-3"), "dt = 5e-3", {"time.dt", "above the limit"});
   expect_error(replace_once(kBase, "water_width = 0.1", "water_width = 0.5"), "water_width = 0.5",
                {"tank.water_width", "larger than the tank"});
