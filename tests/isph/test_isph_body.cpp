@@ -133,7 +133,7 @@ TEST(IsphBody, ImmersedBodyForceIsTheBuoyancy) {
   EXPECT_LT(std::fabs(relaxed), 0.015);
 }
 
-// The table of docs/VALIDATION.md (about 5 min; not run by ctest):
+// The table of docs/VALIDATION.md (about 12 min with its three columns; not run by ctest):
 //   build/ci/tests/isph/test_isph_body --gtest_also_run_disabled_tests --gtest_filter='*HeldBodyForceTable*'
 TEST(IsphBody, DISABLED_HeldBodyForceTable) {
   const double buoy = 1000.0 * 9.8 * 3.14159265358979323846 * 0.03 * 0.03;
