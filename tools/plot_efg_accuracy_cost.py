@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Accuracy-cost of the EFG static edge crack (issue 14): K_I error against the handbook and J path
-spread versus node count, support factor and Gauss points per cell, with wall time. Writes scene variants
+spread versus node count, support factor, Gauss points per cell and precision (double, float: the MLS
+shape functions and the stiffness kernel in float, the sparse solve in double), with wall time. Writes scene variants
 of scenes/efg/edge_crack_static.toml, runs build/ci/bin/efg on each (1 thread), and writes
 <out>/accuracy_cost.csv and <out>/accuracy_cost.png.
   /usr/bin/python3 tools/plot_efg_accuracy_cost.py [--app build/ci/bin/efg] [--out docs/figures/efg]"""
@@ -34,7 +35,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for scale in (4.0, 2.0, 1.0, 0.5):
             for factor in (1.5, 2.0):
-                for gauss in (4, 10):
+                for gauss, precision in ((4, "double"), (10, "double"), (4, "float"), (10, "float")):
                     t = variant(base, "h_min", f"{0.0005 * scale:.6g}")
                     t = variant(t, "h_max", f"{0.002 * scale:.6g}")
                     t = variant(t, "support_factor", factor)
@@ -42,12 +43,13 @@ def main():
                     path = os.path.join(tmp, "scene.toml")
                     open(path, "w").write(t)
                     out = os.path.join(tmp, "run")
-                    subprocess.run([a.app, "--scene", path, "--out", out, "--threads", "1", "--quiet"], check=True, env=env,
+                    subprocess.run([a.app, "--scene", path, "--out", out, "--threads", "1", "--quiet", "--precision", precision],
+                                   check=True, env=env,
                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
                     s = json.load(open(os.path.join(out, "summary.json")))
                     rows.append({"nodes": s["nodes"], "h_min_m": 0.0005 * scale, "support_factor": factor, "gauss": gauss,
                                  "sif_error": s["sif_error"], "sif_max_abs_error": s["sif_max_abs_error"],
-                                 "j_path_difference": s["j_path_spread"], "wall_seconds": s["wall_seconds"], "is_float": 0})
+                                 "j_path_difference": s["j_path_spread"], "wall_seconds": s["wall_seconds"], "is_float": int(precision == "float")})
                     print(rows[-1])
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "accuracy_cost.csv"), "w", newline="") as f:
@@ -57,15 +59,17 @@ def main():
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     for factor in (1.5, 2.0):
         for gauss in (4, 10):
-            sel = [r for r in rows if r["support_factor"] == factor and r["gauss"] == gauss]
-            lab = f"support {factor}, {gauss}x{gauss} Gauss"
-            ax[0].loglog([r["nodes"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], "o-", label=lab)
-            ax[1].loglog([r["wall_seconds"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], "o-", label=lab)
+            for is_float in (0, 1):
+                sel = [r for r in rows if r["support_factor"] == factor and r["gauss"] == gauss and r["is_float"] == is_float]
+                lab = f"support {factor}, {gauss}x{gauss} Gauss, {'float' if is_float else 'double'}"
+                style = "s--" if is_float else "o-"
+                ax[0].loglog([r["nodes"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], style, label=lab)
+                ax[1].loglog([r["wall_seconds"] for r in sel], [abs(r["sif_max_abs_error"]) for r in sel], style, label=lab)
     ax[0].set(xlabel="nodes", ylabel="largest |K/K_handbook - 1| over 5 paths", title="edge crack a/W = 0.5")
     ax[1].set(xlabel="wall time [s] (1 thread)", ylabel="largest |K/K_handbook - 1| over 5 paths", title="accuracy-cost")
     for x in ax:
         x.grid(alpha=0.3, which="both")
-        x.legend(fontsize=8)
+        x.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "accuracy_cost.png"), dpi=110)
 
