@@ -138,6 +138,7 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     c.final_crack_length = dyn->real("final_crack_length", c.crack_length, pl::length());
     // true: nodes on the crack path, split as the tip passes them (the paper's Model 4); false: none there
     c.path_nodes = dyn->boolean("path_nodes", false);
+    c.path_release_gradual = dyn->choice("path_release", {"sudden", "gradual"}, "sudden") == "gradual";
     if (c.growth_speed > 0) {
       const double cs = std::sqrt(mu / c.density);
       if (!(c.growth_speed < 0.9 * cs)) dyn->fail("growth_speed", "must be below 0.9 c_s = " + format_number(0.9 * cs) + " m/s");

@@ -73,6 +73,10 @@ struct Config {
   double growth_speed = 0.0;
   double final_crack_length = 0.0;
   bool path_nodes = false;
+  // How a split path node lets go: false (sudden, the default), its twins free at once; true (gradual),
+  // tied by a spring whose stiffness falls linearly from penalty x E to 0 while the tip runs the next node
+  // spacing (not in the paper: the finite-element node-release remedy, docs/VALIDATION.md).
+  bool path_release_gradual = false;
   EffectSet effects;
 };
 

@@ -312,6 +312,33 @@ class Efg {
         for (Offset k = off(p); k < off(p + 1); ++k)
           for (int c = 0; c < 2; ++c) f(2 * nb(k) + c) += L.traction[5 * p + 2] * static_cast<double>(ph(k)) * L.traction[5 * p + 3 + static_cast<std::size_t>(c)];
     }
+    // Config::path_release_gradual (the finite-element node-release remedy, not in the paper): a split
+    // pair stays tied (a penalty spring k (u+ - u-)^2 / 2 per component, k = tie_stiffness()) for the step
+    // that splits it; from the next growth step on the spring is replaced by the force it carried then,
+    // F0 = k (u+ - u-), applied to the twins and falling linearly to 0 while the tip runs the next node
+    // spacing past the node: F = F0 (1 - s), s = (a - x_node) / spacing.
+    for (auto& t : ties_) {
+      if (t.state == Tie::tied && !restore_ties_ && ud_.size() == static_cast<Eigen::Index>(2 * n)) {
+        for (int c = 0; c < 2; ++c) t.f0[c] = tie_stiffness() * (ud_(2 * t.upper + c) - ud_(2 * t.lower + c));
+        t.state = Tie::released;
+      }
+      if (t.state == Tie::fresh || t.state == Tie::tied) {  // (tied: only when a checkpoint is restored)
+        for (int c = 0; c < 2; ++c) {
+          const int a = static_cast<int>(2 * t.upper + c), b = static_cast<int>(2 * t.lower + c);
+          trip.emplace_back(a, a, tie_stiffness());
+          trip.emplace_back(b, b, tie_stiffness());
+          trip.emplace_back(a, b, -tie_stiffness());
+          trip.emplace_back(b, a, -tie_stiffness());
+        }
+        t.state = Tie::tied;
+      } else if (t.state == Tie::released) {
+        const double left = std::max(0.0, 1.0 - (config_.crack_length - t.x) / t.length);
+        for (int c = 0; c < 2; ++c) {
+          f(2 * t.upper + c) -= left * t.f0[c];
+          f(2 * t.lower + c) += left * t.f0[c];
+        }
+      }
+    }
     K_ = SparseMatrix(2 * n, 2 * n);
     K_.setFromTriplets(trip.begin(), trip.end());
     f_ = f;
@@ -428,6 +455,11 @@ class Efg {
     ar.put(prefix + "step", step_);
     ar.put(prefix + "crack_length", config_.crack_length);
     ar.put(prefix + "tip_speed", speed_);
+    if (!ties_.empty()) {  // gradual release: each tie's state and released force
+      std::vector<double> t;
+      for (const auto& x : ties_) t.insert(t.end(), {static_cast<double>(x.state), x.f0[0], x.f0[1]});
+      ar.put_vector(prefix + "ties", t);
+    }
   }
   void load(const models::Archive& ar, const std::string& prefix) {
     const double dt = ar.get<double>(prefix + "dt");
@@ -443,6 +475,21 @@ class Efg {
     vec("u", ud_);
     vec("v", vd_);
     vec("a", ad_);
+    if (!ties_.empty()) {  // the ties as they were (set_crack_length above made them fresh): reassemble
+      const auto t = ar.get_vector<double>(prefix + "ties");
+      if (t.size() != 3 * ties_.size()) throw std::runtime_error("EFG checkpoint: '" + prefix + "ties' has the wrong size");
+      for (std::size_t k = 0; k < ties_.size(); ++k) {
+        ties_[k].state = static_cast<typename Tie::State>(static_cast<int>(t[3 * k]));
+        ties_[k].f0[0] = t[3 * k + 1];
+        ties_[k].f0[1] = t[3 * k + 2];
+      }
+      restore_ties_ = true;
+      assemble();
+      restore_ties_ = false;
+      SparseMatrix keff = K_ + M_ * (1.0 / (beta_ * dt_ * dt_));
+      keff_.compute(keff);
+      if (keff_.info() != Eigen::Success) throw std::runtime_error("EFG: the effective stiffness factorisation failed");
+    }
     time_ = ar.get<double>(prefix + "time");
     step_ = ar.get<std::int64_t>(prefix + "step");
     sync_dynamic();
@@ -743,6 +790,12 @@ class Efg {
       layout_.nodes[2 * i + 1] = eps;
       layout_.nodes.insert(layout_.nodes.end(), {layout_.nodes[2 * i], -eps});
       layout_.dm.push_back(layout_.dm[i]);
+      if (config_.path_release_gradual) {
+        const double ax = config_.crack == CrackKind::centre ? std::abs(layout_.nodes[2 * i]) : layout_.nodes[2 * i];
+        const auto next = std::upper_bound(layout_.xs.begin(), layout_.xs.end(), ax + tol);
+        const double length = next != layout_.xs.end() ? *next - ax : config_.h_min;
+        ties_.push_back({static_cast<Index>(i), static_cast<Index>(layout_.dm.size() - 1), ax, length, Tie::fresh, {0.0, 0.0}});
+      }
     }
     const auto grow = [&](Eigen::VectorXd& x) {
       if (x.size() != n0) return;  // not started: start_dynamic sizes it
@@ -846,6 +899,16 @@ class Efg {
   double cod_x_ = 0.0;
   bool prescribed_growth_ = false;
   Index split_nodes_ = 0;
+  struct Tie {
+    Index upper, lower;  // the split node (upper face) and its twin (lower face)
+    double x, length;    // the node's distance along the crack, and the spacing over which the tie fades
+    enum State { fresh, tied, released } state = fresh;
+    double f0[2] = {0.0, 0.0};  // the spring's force when it was released
+  };
+  std::vector<Tie> ties_;
+  bool restore_ties_ = false;  // assemble() during load(): the ties' states as saved, none moved on
+  // the tie's stiffness at the split: Config::penalty x E (the essential conditions' penalty)
+  double tie_stiffness() const { return config_.penalty * config_.young; }
   models::StateRegistry no_views_;
 };
 

@@ -178,7 +178,12 @@ TEST(EfgDynamic, PrescribedGrowthPutsTheCrackWhereItIsAtTheEndOfTheStep) {
 // faces open by about what they open on the layout without path nodes, and a checkpoint taken after
 // some splits restarts bitwise. (Without the split, the passed nodes tie the faces: the opening half-way
 // along the grown part is 3.5e-8 m against 1.7e-7 m, and the test fails.)
-TEST(EfgDynamic, PathNodesSplitWhenTheTipPassesThem) {
+// Also with the gradual release (Config::path_release_gradual: the tie's force fades over a spacing),
+// whose checkpoint carries the ties' states and forces.
+class PathNodes : public ::testing::TestWithParam<bool> {};
+INSTANTIATE_TEST_SUITE_P(EfgDynamic, PathNodes, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "Gradual" : "Sudden"; });
+TEST_P(PathNodes, SplitWhenTheTipPassesThem) {
   auto c = coarse_chen_plate();
   c.growth_speed = 1000.0;
   c.growth_start = 0.8e-6;
@@ -186,6 +191,7 @@ TEST(EfgDynamic, PathNodesSplitWhenTheTipPassesThem) {
   const double dt = 0.4e-6;
   auto off = c;
   c.path_nodes = true;
+  c.path_release_gradual = GetParam();
   efg::Efg<double> m(c), o(off);
   const double eps = m.layout().face_offset;
   std::vector<double> path;  // |x| of the path nodes
