@@ -1,5 +1,5 @@
 // EFG scenes: the shipped scenes/efg/*.toml load with the handbook factor of their plate; bad scenes are
-// refused naming file:line and key (a contour leaving the plate, h_max below h_min, float precision).
+// refused naming file:line and key (a contour leaving the plate, h_max below h_min, an unknown precision).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +81,8 @@ TEST(EfgScenes, BaseLoadsWithTadasFactor) {
   EXPECT_TRUE(s.config.plane_strain);
   EXPECT_EQ(s.config.j_radii.size(), 2u);
   // draft coarsens the spacing x4
+  // float (the shape functions and the stiffness kernel in float, the solve in double) is offered
+  EXPECT_EQ(io::load_efg_scene(dir.write("float.toml", kBase), "float").header.precision, "float");
   const auto d = io::load_efg_scene(dir.write("scene.toml", kBase), "", "draft");
   EXPECT_NEAR(d.config.h_min, 4 * s.config.h_min, 1e-15);
 }
@@ -90,7 +92,7 @@ TEST(EfgScenes, BadScenesAreRefusedAtTheirKey) {
                {"j_integral.radii", "inside the plate"});
   expect_error(replace_once(kBase, "h_max = 0.05", "h_max = 0.01"), "h_max = 0.01", {"discretization.h_max", "h_min"});
   expect_error(replace_once(kBase, "crack_length = 0.5", "crack_length = 0.9"), "crack_length = 0.9", {"plate.crack_length"});
-  expect_error(replace_once(kBase, "effects = []", "effects = []\nprecision = \"float\""), "precision = \"float\"",
+  expect_error(replace_once(kBase, "effects = []", "effects = []\nprecision = \"half\""), "precision = \"half\"",
                {"model.precision", "double"});
   expect_error(replace_once(kBase, "stress = 1.0e6", "stress = nan"), "stress = nan", {"loading.stress"});
 }
