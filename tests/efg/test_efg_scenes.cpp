@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "io/efg_scene.hpp"
@@ -72,6 +74,27 @@ TEST(EfgScenes, EveryShippedSceneLoads) {
     ++n;
   }
   EXPECT_GE(n, 2);
+}
+
+// The running-crack keys of Model 4's scene: path nodes and their release load; a release that is not
+// one of the two is refused at its line.
+TEST(EfgScenes, PathNodeKeys) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  std::ifstream in(fs::path(src) / "scenes" / "efg" / "chen_centre_crack_running.toml");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  const std::string text = buf.str();
+  ASSERT_NE(text.find("path_nodes = true"), std::string::npos);
+  polymech::testing::TempDir dir;
+  const auto s = io::load_efg_scene(dir.write("running.toml", text));
+  EXPECT_TRUE(s.config.path_nodes);
+  EXPECT_FALSE(s.config.path_release_gradual);
+  const auto g = io::load_efg_scene(
+      dir.write("gradual.toml", replace_once(text, "path_nodes = true", "path_nodes = true\npath_release = \"gradual\"")));
+  EXPECT_TRUE(g.config.path_release_gradual);
+  expect_error(replace_once(text, "path_nodes = true", "path_nodes = true\npath_release = \"slow\""), "path_release = \"slow\"",
+               {"dynamic.path_release", "sudden", "gradual"});
 }
 
 TEST(EfgScenes, BaseLoadsWithTadasFactor) {
