@@ -247,6 +247,12 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   j["wall_points"] = model.wall_points();
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
+  // the readings that are scene choices (docs/METHODS.md): alpha of eq. (4), the free-surface test, the
+  // pressure gradient's form and the ghost interpolation
+  j["alpha"] = c.alpha;
+  j["surface_detection"] = c.surface_detection == pm::isph::SurfaceDetection::divergence ? "divergence" : "density";
+  j["pressure_gradient"] = c.pressure_gradient == pm::isph::PressureGradient::difference ? "difference" : "symmetric";
+  j["ghost_interpolation"] = c.ghost_interpolation == pm::isph::GhostInterpolation::linear ? "linear" : "shepard";
   j["steps"] = stats.steps;
   j["wall_seconds"] = wall;
   j["particle_steps_per_second"] = double(model.particles()) * double(stats.steps) / wall;
