@@ -10,12 +10,13 @@ namespace polymech::io {
 
 namespace pl = polymech::io::plausible;
 
-// Rates: docs/PERFORMANCE.md, section "ISPH (stage 1)", 1 thread: a step costs about one
-// particle-PPE-iteration per particle and BiCGSTAB iteration at 8.7e5 /s (the dam break at 3200
-// particles: 99 iterations per step, 95 % of the step in the PPE); iterations ~ 1.75 sqrt(N) in 2D and
-// ~ 1.4 N^(1/3) in 3D (measured at 200 to 3200 particles). Memory: ~40 reals per particle and wall
-// point plus the three neighbour lists (~35 pairs per particle in 2D, ~150 in 3D, one int each).
-CostEstimate isph_cost(double particles, double wall_points, int dim, double steps) {
+// Rates: bench/bench_isph.cpp, BM_IsphStep (docs/PERFORMANCE.md, "ISPH: the stored PPE operator"), 1 thread:
+// a step costs about one particle-PPE-iteration per particle and BiCGSTAB iteration, 8e6 /s with the
+// stored operator (7.3e6 at 1e3 particles, 1.07e7 at 1e4) and 2.5e6 /s matrix-free (2.2e6 - 2.6e6);
+// iterations ~ 1.75 sqrt(N) in 2D and ~ 1.4 N^(1/3) in 3D (measured at 200 to 1e4 particles). Memory:
+// ~40 reals per particle and wall point plus the three neighbour lists (~35 pairs per particle in 2D,
+// ~150 in 3D, one int each) and, stored, one real per pair of each list (with a quarter's headroom).
+CostEstimate isph_cost(double particles, double wall_points, int dim, double steps, bool stored) {
   CostEstimate c;
   c.method = "stabilized ISPH (IGCB walls)";
   c.item_name = "particles";
@@ -25,12 +26,16 @@ CostEstimate isph_cost(double particles, double wall_points, int dim, double ste
   c.pairs = particles * pairs_per;
   c.steps = steps;
   c.step_name = "steps";
-  c.bytes = 64e6 + (particles + wall_points) * 40.0 * 8.0 + 3.0 * (particles + wall_points) * pairs_per * 4.0;
+  const double list_pairs = 3.0 * (particles + wall_points) * pairs_per;
+  c.bytes = 64e6 + (particles + wall_points) * 40.0 * 8.0 + list_pairs * 4.0 + (stored ? list_pairs * 1.25 * 8.0 : 0.0);
   const double iterations = dim == 2 ? 1.75 * std::sqrt(particles) : 1.4 * std::cbrt(particles);
-  const double rate = dim == 2 ? 8.7e5 : 8.7e5 * 35.0 / 150.0;  // particle-iterations/s
+  const double rate2 = stored ? 8e6 : 2.5e6;
+  const double rate = dim == 2 ? rate2 : rate2 * 35.0 / 150.0;  // particle-iterations/s
   c.seconds = steps * particles * std::max(iterations, 5.0) / rate;
-  c.rate = "8.7e5 particle-PPE-iterations/s in 2D (scaled by the pair count in 3D), about 1.75 sqrt(N) BiCGSTAB "
-           "iterations per step, docs/PERFORMANCE.md 'ISPH (stage 1)', 1 thread";
+  c.rate = std::string(stored ? "8e6" : "2.5e6") + " particle-PPE-iterations/s in 2D (" +
+           (stored ? "stored" : "matrix-free") +
+           " operator; scaled by the pair count in 3D), about 1.75 sqrt(N) BiCGSTAB iterations per step, "
+           "bench_isph BM_IsphStep, docs/PERFORMANCE.md, 1 thread";
   return c;
 }
 
@@ -73,6 +78,7 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
                                     Range{0.0, 3.0, false, false, "free surface where div r < this (0: 1.5 in 2D, 2.4 in 3D)"});
   c.tolerance = fluid.real("ppe_tolerance", 1e-8, Range{1e-14, 1e-2, false, false, "relative residual"});
   c.max_iterations = static_cast<int>(fluid.integer("ppe_max_iterations", 2000, 1, 1000000));
+  c.ppe_stored = fluid.choice("ppe_operator", {"stored", "matrix_free"}, "stored") == "stored";
   fluid.finish();
 
   const SceneTable tank = root.table("tank");
@@ -144,7 +150,7 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
                           " Pa; at least 10 steps are needed (lower the modulus or dt)");
   }
   const auto n = isph::count(c);
-  out.cost = isph_cost(double(n.fluid), double(n.wall_points), c.dim, steps);
+  out.cost = isph_cost(double(n.fluid), double(n.wall_points), c.dim, steps, c.ppe_stored);
   out.cost.size_keys = {"fluid.spacing = " + format_number(c.spacing) + " m (after the accuracy preset)",
                         "tank.water_width, water_height = " + format_number(c.fluid[0]) + ", " +
                             format_number(c.fluid[1]) + " m",

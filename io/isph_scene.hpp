@@ -31,6 +31,6 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
                           const std::string& accuracy = "");
 
 // ISPH: particles, wall points, steps; the rate of docs/PERFORMANCE.md "ISPH".
-CostEstimate isph_cost(double particles, double wall_points, int dim, double steps);
+CostEstimate isph_cost(double particles, double wall_points, int dim, double steps, bool stored = true);
 
 }  // namespace polymech::io

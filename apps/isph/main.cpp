@@ -250,6 +250,7 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   // the readings that are scene choices (docs/METHODS.md): alpha of eq. (4), the free-surface test, the
   // pressure gradient's form and the ghost interpolation
   j["alpha"] = c.alpha;
+  j["ppe_operator"] = c.ppe_stored ? "stored" : "matrix_free";
   j["surface_detection"] = c.surface_detection == pm::isph::SurfaceDetection::divergence ? "divergence" : "density";
   j["pressure_gradient"] = c.pressure_gradient == pm::isph::PressureGradient::difference ? "difference" : "symmetric";
   j["ghost_interpolation"] = c.ghost_interpolation == pm::isph::GhostInterpolation::linear ? "linear" : "shepard";

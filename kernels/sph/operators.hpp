@@ -292,11 +292,22 @@ struct GhostPressure {
   Params<T, D> c;
   View1<T> pin;  // fluid pressure (or the Krylov vector)
   bool affine;
+  View1<T> stored = {};  // the pair weights of StorePairCoefficients (empty: computed here; no Shepard sum then)
   struct Accumulator {
     T s, sp;
   };
   KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {T(0), T(0)}; }
-  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index k, Index j, Offset) const {
+  // The weight of fluid particle j in the ghost value at k: V_j W_gj (c0 + c . (x_j - x_g)), eq. (23).
+  KOKKOS_FORCEINLINE_FUNCTION T coefficient(Index k, Index j, Offset) const {
+    Vec<T, D> r;
+    const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
+    return ghost_weight<T, D>(wp, k, wv, r);
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator& acc, Index k, Index j, Offset o) const {
+    if (stored.extent(0) > 0) {
+      if (!f.surface(j)) acc.sp += stored(o) * pin(j);
+      return;
+    }
     Vec<T, D> r;
     const T wv = c.w.value(pair_distance<T, D>(wp.ghost, k, f.x, j, r)) * c.mass / f.rho(j);
     acc.s += wv;
@@ -310,7 +321,7 @@ struct GhostPressure {
       p += wp.dist(k) * c.rho0 * dot(ga, n);  // eq. (26)
     }
     wp.p(k) = p;
-    wp.shepard(k) = acc.s;
+    if (stored.extent(0) == 0) wp.shepard(k) = acc.s;
   }
   KOKKOS_INLINE_FUNCTION static void join(Accumulator& a, const Accumulator& b) {
     a.s += b.s;
@@ -470,13 +481,17 @@ struct FluidLaplacian {
   Fluid<T, D> f;
   Params<T, D> c;
   View1<T> xin;
+  View1<T> stored = {};  // the pair coefficients of StorePairCoefficients (empty: computed here)
   using Accumulator = T;
   KOKKOS_INLINE_FUNCTION T start(Index) const { return T(0); }
-  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index j, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION T coefficient(Index i, Index j, Offset) const {
     Vec<T, D> r;
-    const T F = c.w.f(pair_distance<T, D>(f.x, i, f.x, j, r));
+    return T(2) * c.mass * c.w.f(pair_distance<T, D>(f.x, i, f.x, j, r));
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index j, Offset o) const {
+    const T a = stored.extent(0) > 0 ? stored(o) : coefficient(i, j, o);
     const T xj = f.surface(j) ? T(0) : xin(j);  // Dirichlet p = 0 at the free surface
-    acc += T(2) * c.mass * F * (xin(i) - xj);   // -eq. (10) times rho_i
+    acc += a * (xin(i) - xj);                   // -eq. (10) times rho_i
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const { f.scratch(i) = acc / f.rho(i); }
   KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
@@ -488,17 +503,37 @@ struct WallLaplacian {
   WallPoints<T, D> wp;
   Params<T, D> c;
   View1<T> xin, yout;
+  View1<T> stored = {};  // the pair coefficients of StorePairCoefficients (empty: computed here)
   using Accumulator = T;
   KOKKOS_INLINE_FUNCTION T start(Index) const { return T(0); }
-  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index k, Offset) const {
+  KOKKOS_FORCEINLINE_FUNCTION T coefficient(Index i, Index k, Offset) const {
     Vec<T, D> r;
-    const T F = c.w.f(pair_distance<T, D>(f.x, i, wp.x, k, r));
-    acc += T(2) * wp.vol(k) * F * (xin(i) - wp.p(k));  // -eq. (20), p_c,m from the ghost (homogeneous part)
+    return T(2) * wp.vol(k) * c.w.f(pair_distance<T, D>(f.x, i, wp.x, k, r));
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(T& acc, Index i, Index k, Offset o) const {
+    const T a = stored.extent(0) > 0 ? stored(o) : coefficient(i, k, o);
+    acc += a * (xin(i) - wp.p(k));  // -eq. (20), p_c,m from the ghost (homogeneous part)
   }
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const {
     yout(i) = f.surface(i) ? xin(i) : f.inv_diag(i) * (f.scratch(i) + acc);
   }
   KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
+};
+
+// The PPE operator's pair coefficients, stored once per step (`ppe_operator = "stored"`, the default):
+// positions, densities and ghost weights do not change within a solve, so each of its applies reduces to
+// three sparse products over the neighbour lists instead of three kernel evaluations per pair. `Pass` is
+// GhostPressure, FluidLaplacian or WallLaplacian; out(o) = pass.coefficient(i, j, o) for the pair o of
+// row i, formed as the matrix-free pass forms it, so both give the same result to the bit.
+template <class T, class Pass>
+struct StorePairCoefficients {
+  Pass pass;
+  View1<T> out;  // one per pair of the pass's list
+  struct Accumulator {};
+  KOKKOS_INLINE_FUNCTION Accumulator start(Index) const { return {}; }
+  KOKKOS_FORCEINLINE_FUNCTION void pair(Accumulator&, Index i, Index j, Offset o) const { out(o) = pass.coefficient(i, j, o); }
+  KOKKOS_INLINE_FUNCTION void finish(Index, Accumulator&) const {}
+  KOKKOS_INLINE_FUNCTION static void join(Accumulator&, const Accumulator&) {}
 };
 
 // ---- projection, eq. (5), with the pressure gradient eqs. (9) + (19); then the drift ----

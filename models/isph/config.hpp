@@ -66,6 +66,10 @@ struct Config {
   Body body;                        // used with the effect `rigid_body`
   double tolerance = 1e-8;          // PPE: relative residual
   int max_iterations = 2000;        // PPE: BiCGSTAB iterations per step
+  // PPE operator: its pair coefficients stored once per step (true: three sparse products per apply, one
+  // value per pair of the three lists in memory) or recomputed in every apply (false: matrix-free, no
+  // per-pair memory). Both give the same pressure to the bit (docs/PERFORMANCE.md, ISPH).
+  bool ppe_stored = true;
   EffectSet effects;
 };
 

@@ -53,10 +53,25 @@ struct PressureOperator {
   const neighbors::NeighborList* gf = nullptr;
   Index local_size() const { return f.size(); }
   Index owned_size() const { return f.size(); }
+  // the pair coefficients of the three passes (empty: matrix-free, computed in every apply)
+  View1<T> ghost_coef, fluid_coef, wall_coef;
   void apply(const View1<T>& x, const View1<T>& y) const {
-    neighbors::for_each_row("polymech::sph::ghost_pressure", *gf, sph::GhostPressure<T, D>{f, wp, c, x, false});
-    neighbors::for_each_row("polymech::sph::laplacian_fluid", *ff, sph::FluidLaplacian<T, D>{f, c, x});
-    neighbors::for_each_row("polymech::sph::laplacian_wall", *fw, sph::WallLaplacian<T, D>{f, wp, c, x, y});
+    neighbors::for_each_row("polymech::sph::ghost_pressure", *gf, sph::GhostPressure<T, D>{f, wp, c, x, false, ghost_coef});
+    neighbors::for_each_row("polymech::sph::laplacian_fluid", *ff, sph::FluidLaplacian<T, D>{f, c, x, fluid_coef});
+    neighbors::for_each_row("polymech::sph::laplacian_wall", *fw, sph::WallLaplacian<T, D>{f, wp, c, x, y, wall_coef});
+  }
+  // Store the coefficients for the lists as they are now (once per step, before the solve), reusing
+  // `ghost_coef`, ... when they are large enough.
+  void store_coefficients() {
+    store(*gf, sph::GhostPressure<T, D>{f, wp, c, f.pressure, false}, ghost_coef, "polymech::isph::ppe_ghost_coef");
+    store(*ff, sph::FluidLaplacian<T, D>{f, c, f.pressure}, fluid_coef, "polymech::isph::ppe_fluid_coef");
+    store(*fw, sph::WallLaplacian<T, D>{f, wp, c, f.pressure, f.scratch}, wall_coef, "polymech::isph::ppe_wall_coef");
+  }
+  template <class Pass>
+  static void store(const neighbors::NeighborList& list, const Pass& pass, View1<T>& coef, const char* label) {
+    const auto pairs = static_cast<std::size_t>(list.num_pairs);
+    if (coef.extent(0) < pairs) coef = View1<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(label)), pairs + pairs / 4);
+    neighbors::for_each_row(label, list, sph::StorePairCoefficients<T, Pass>{pass, coef});
   }
 };
 
@@ -154,6 +169,19 @@ class Isph {
   const sph::WallPoints<T, D>& walls() const { return wp_; }
   const sph::Params<T, D>& params() const { return par_; }
   const PpeRecord& last_solve() const { return last_; }
+  // y = D^-1 A x, the PPE operator over the lists of the last step, with its pair coefficients stored
+  // (those of the last solve; computed here when the scene does not store them) or matrix-free: benchmarks, tests.
+  void apply_ppe(const View1<T>& x, const View1<T>& y, bool stored) const {
+    PressureOperator<T, D> op{f_, wp_, par_, &ff_, &fw_, &gf_, {}, {}, {}};
+    if (stored && cfg_.ppe_stored) {
+      op.ghost_coef = ppe_coef_[0];
+      op.fluid_coef = ppe_coef_[1];
+      op.wall_coef = ppe_coef_[2];
+    } else if (stored) {
+      op.store_coefficients();
+    }
+    op.apply(x, y);
+  }
   long long ppe_iterations_total() const { return ppe_total_; }
   long long ppe_solves() const { return ppe_solves_; }
   double ppe_seconds() const { return ppe_seconds_; }
@@ -388,7 +416,13 @@ class Isph {
     }
   }
   void solve_pressure() {
-    PressureOperator<T, D> op{f_, wp_, par_, &ff_, &fw_, &gf_};
+    PressureOperator<T, D> op{f_, wp_, par_, &ff_, &fw_, &gf_, ppe_coef_[0], ppe_coef_[1], ppe_coef_[2]};
+    if (cfg_.ppe_stored) {
+      op.store_coefficients();
+      ppe_coef_[0] = op.ghost_coef;  // kept for the next step's lists (grown when they grow)
+      ppe_coef_[1] = op.fluid_coef;
+      ppe_coef_[2] = op.wall_coef;
+    }
     const auto r = sph::bicgstab(op, f_.rhs, f_.pressure, opts_);  // warm start: p^n in f_.pressure
     last_.iterations = r.iterations;
     last_.residual = r.true_relative_residual;
@@ -633,6 +667,7 @@ class Isph {
   sph::Fluid<T, D> f_;
   sph::WallPoints<T, D> wp_;
   View1<T> diag_;
+  View1<T> ppe_coef_[3];  // the PPE operator's stored pair coefficients (ppe_stored): ghost, fluid, wall lists
   neighbors::NeighborSearch<T, D> search_ff_, search_fw_, search_gf_;
   neighbors::NeighborList ff_, fw_, gf_;
   solvers::SolverOptions opts_;

@@ -82,6 +82,10 @@ def main():
                   f"--checkpoint-steps smaller\n{err}")
             return 1
         time.sleep(delays[k % len(delays)])
+        if p.poll() is not None:
+            print(f"kill {k + 1}: the run ended ({p.returncode}) within {delays[k % len(delays)]:.2f} s of checkpoint "
+                  f"{newest_step(run)}, before the kill; make the run longer")
+            return 1
         p.send_signal(signal.SIGKILL)
         p.wait()
         left = sorted(os.listdir(run))
