@@ -2,7 +2,8 @@
 // l0 = 5 mm (Table 1's spacing, the walls' IGCB cells as in scenes/isph/hydrostatic.toml):
 //   BM_IsphPpeApply: one application of the pressure Poisson operator (two per BiCGSTAB iteration; the
 //     PPE is 84-96 % of the step), with its pair coefficients stored once per step (`stored` 1, the
-//     default `ppe_operator`) or recomputed in every apply (0, matrix-free), at 1e4 .. 1e6 particles;
+//     default `ppe_operator`) or recomputed in every apply (0, matrix-free), at 1e4 .. 1e6 particles, in
+//     double and float;
 //   BM_IsphStep: the whole step (three neighbour lists, density, free surface, ghosts, the PPE solve
 //     warm-started from the last pressure, projection) after a few settling steps, at 1e3 and 1e4
 //     particles (a step at 1e5 takes minutes: the Jacobi-scaled BiCGSTAB needs ~1.75 sqrt(N) iterations).
@@ -33,16 +34,17 @@ ip::Config square_tank(int n, int max_iterations) {
   return c;
 }
 
+template <class T>
 void BM_IsphPpeApply(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const bool stored = state.range(1) != 0;
   // one step builds the lists, densities, surface flags and ghost weights the operator reads; its solve is
   // cut at one iteration (the state, not the pressure, is what the apply needs)
-  ip::Isph<double, 2> m(square_tank(n, 1));
+  ip::Isph<T, 2> m(square_tank(n, 1));
   m.step();
   const auto size = static_cast<std::size_t>(m.particles());
-  pm::View1<double> x("bench_isph::x", size), y("bench_isph::y", size);
-  Kokkos::deep_copy(x, 1.0);
+  pm::View1<T> x("bench_isph::x", size), y("bench_isph::y", size);
+  Kokkos::deep_copy(x, T(1));
   m.apply_ppe(x, y, stored);  // stores the coefficients outside the timing
   for (auto _ : state) {
     m.apply_ppe(x, y, stored);
@@ -53,7 +55,11 @@ void BM_IsphPpeApply(benchmark::State& state) {
   state.counters["particles"] = particles;
   state.counters["particle_applies_per_s"] = benchmark::Counter(particles, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_IsphPpeApply)
+BENCHMARK(BM_IsphPpeApply<double>)
+    ->ArgNames({"n", "stored"})
+    ->ArgsProduct({{100, 316, 1000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IsphPpeApply<float>)
     ->ArgNames({"n", "stored"})
     ->ArgsProduct({{100, 316, 1000}, {0, 1}})
     ->Unit(benchmark::kMillisecond);

@@ -114,6 +114,9 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
     if (c.body.centre[1] - R < 0 || c.body.centre[1] + R > c.tank[1]) body->fail("y", "puts the body outside the tank");
     c.body.added_mass = body->real("added_mass", 1.0, Range{0.0, 10.0, false, false, "C_a (0: plain CSS as the paper)"});
     c.body.release_time = body->real("release_time", 0.0, Range{0.0, 1e6, false, false, "s (held fixed until then)"});
+    c.body.fluid_rings = static_cast<int>(body->integer("fluid_rings", 0, 0, 20));
+    c.body.fluid_clearance =
+        body->real("fluid_clearance", 0.0, Range{0.0, 2.0, false, false, "l0 (the lattice starts at R + (fluid_rings + this) l0)"});
     out.draft_average_last = body->real("draft_average_last", 0.0, Range{0.0, 1e6, false, false, "s"});
     c.body.contact_modulus =
         body->real("contact_modulus", 0.0, Range{0.0, 1e13, false, false, "Pa, E* of the body-tank contact (0: automatic)"});

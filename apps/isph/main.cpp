@@ -292,6 +292,8 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
     j["body_velocity"] = {b.v[0], b.v[1]};
     j["body_angle"] = b.theta;
     j["body_density_ratio"] = c.body.density_ratio;
+    j["body_fluid_rings"] = c.body.fluid_rings;
+    j["body_fluid_clearance"] = c.body.fluid_clearance;
     j["body_area_by_quadrature"] = model.body_properties().area;
     j["body_force"] = {b.force[0], b.force[1], b.moment};  // the fluid's, last step [N/m, N/m, N]
     j["body_mass"] = model.body_properties().mass;

@@ -36,6 +36,14 @@ struct Body {
   double diameter = 0.0;          // [m] (0: no body)
   double density_ratio = 0.8;     // rho_r / rho0
   double added_mass = 1.0;         // C_a: the coupling treats C_a rho0 pi R^2 implicitly (0: the paper's plain CSS)
+  // The water's initial particles around the body (docs/METHODS.md, "The water around an immersed body"):
+  // the lattice without its points closer than R + clearance l0 to the centre (default 0: the gap to the
+  // body's outer cells averages one spacing, as in the lattice; 0.5 was the layout before 2026-11-24, half
+  // a spacing more, ~7 % of the density missing beside the body), or, with rings K > 0, K rings of
+  // particles at R + (k + 1/2) l0 (round(2 pi r / l0) each, concentric with the body's cells) and the
+  // lattice from R + (K + clearance) l0.
+  int fluid_rings = 0;
+  double fluid_clearance = 0.0;   // [l0]
   double release_time = 0.0;      // [s] held fixed (force still computed) until then: the pressure of the
                                   // water started from rest needs a few hundred steps to become hydrostatic
   // Contact with the tank's bottom and sides: the shared Hertz-Mindlin law (kernels/contact/hertz_mindlin.hpp)

@@ -26,15 +26,30 @@ std::vector<double> fluid_positions(const Config& c) {
   const double R = 0.5 * c.body.diameter;
   std::vector<double> out;
   out.reserve(static_cast<std::size_t>(n[0] * n[1] * n[2] * c.dim));
+  const int rings = body ? c.body.fluid_rings : 0;
+  const double cut = R + (rings + c.body.fluid_clearance) * l0;  // the lattice starts there (Body::fluid_rings)
   for (long long k = 0; k < n[2]; ++k)
     for (long long j = 0; j < n[1]; ++j)
       for (long long i = 0; i < n[0]; ++i) {
         const double x = (i + 0.5) * l0, y = (j + 0.5) * l0;
-        if (body && std::hypot(x - c.body.centre[0], y - c.body.centre[1]) < R + 0.5 * l0) continue;
+        if (body && std::hypot(x - c.body.centre[0], y - c.body.centre[1]) < cut) continue;
         out.push_back(x);
         out.push_back(y);
         if (c.dim == 3) out.push_back((k + 0.5) * l0);
       }
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k < rings; ++k) {  // concentric with the body's cells (body_cells), outwards
+    const double r = R + (k + 0.5) * l0;
+    const long long m = std::llround(2 * pi * r / l0);
+    for (long long q = 0; q < m; ++q) {
+      const double th = (q + 0.5) * 2 * pi / double(m);
+      const double x = c.body.centre[0] + r * std::cos(th), y = c.body.centre[1] + r * std::sin(th);
+      // inside the water block, a quarter spacing off its sides and its surface, as the lattice is half a spacing
+      if (x < 0.25 * l0 || x > (n[0] - 0.25) * l0 || y < 0.25 * l0 || y > (n[1] - 0.25) * l0) continue;
+      out.push_back(x);
+      out.push_back(y);
+    }
+  }
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "common.hpp"
 
@@ -268,4 +269,47 @@ TEST(IsphBody, HeavyBodyRestsOnTheBottomWithoutPassingThrough) {
   EXPECT_LT(std::hypot(b.v[0], b.v[1]), 0.02);     // at rest
   EXPECT_GT(contact, 0.9 * net);                   // carried by the bottom
   EXPECT_LT(contact, 4.0 * net);
+}
+
+// The water laid around an immersed body (Body::fluid_clearance, fluid_rings; docs/METHODS.md, "The water
+// around an immersed body"): the summation density beside the body at the start. A cylinder of D = 20 l0 at
+// mid-depth, on the lattice offsets of scenes/isph/cylinder_neutral.toml at l0 = 5 mm, where the old cut at
+// R + l0/2 left 7 % of the density missing beside it (and, with the divergence surface and alpha = 0.1, blew up).
+TEST(IsphBody, WaterAroundAnImmersedBodyStartsAtFullDensity) {
+  auto density_beside = [](int rings, double clearance) {
+    auto c = tank_config(2, 0.005, 0.3, 0.2, 5e-4);
+    c.effects = pm::EffectSet::resolve({"viscosity", "stabilization", "rigid_body"}, ip::effect_table());
+    c.body.diameter = 0.1;
+    c.body.centre[0] = 0.15;
+    c.body.centre[1] = 0.1;
+    c.body.density_ratio = 1.0;
+    c.body.release_time = 1.0;
+    c.body.fluid_rings = rings;
+    c.body.fluid_clearance = clearance;
+    ip::Isph<double, 2> m(c);
+    m.step();  // the density of the step is that of the initial layout
+    const auto x = m.host_positions();
+    const auto rho = m.host_density();
+    double lo = 1e300, sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < rho.size(); ++i) {
+      const double r = std::hypot(x[2 * i] - 0.15, x[2 * i + 1] - 0.1);
+      EXPECT_GE(r, 0.05) << "particle " << i << " inside the body";
+      if (r > 0.05 + 2 * 0.005) continue;
+      lo = std::min(lo, rho[i]);
+      sum += rho[i];
+      ++n;
+    }
+    std::printf("rings %d, clearance %.1f l0: %d particles within 2 l0 of the body, density min %.1f, mean %.1f\n", rings,
+                clearance, n, lo, sum / n);
+    return std::make_pair(lo / 1000.0, sum / n / 1000.0);
+  };
+  const auto plain = density_beside(0, 0.0), rings = density_beside(2, 0.0), old = density_beside(0, 0.5);
+  // measured: min / mean 0.899 / 0.990 (default), 0.965 / 1.023 (two rings), 0.859 / 0.932 (the old cut)
+  EXPECT_GT(plain.first, 0.88);
+  EXPECT_NEAR(plain.second, 1.0, 0.015);
+  EXPECT_GT(rings.first, 0.95);
+  EXPECT_NEAR(rings.second, 1.0, 0.03);
+  EXPECT_LT(old.first, 0.87);  // the gap of the old layout
+  EXPECT_LT(old.second, 0.95);
 }
