@@ -5,8 +5,10 @@
 //     default `ppe_operator`) or recomputed in every apply (0, matrix-free), at 1e4 .. 1e6 particles, in
 //     double and float;
 //   BM_IsphStep: the whole step (three neighbour lists, density, free surface, ghosts, the PPE solve
-//     warm-started from the last pressure, projection) after a few settling steps, at 1e3 and 1e4
-//     particles (a step at 1e5 takes minutes: the Jacobi-scaled BiCGSTAB needs ~1.75 sqrt(N) iterations).
+//     warm-started from the last pressure, projection) after a few settling steps: matrix-free or stored
+//     operator with Jacobi scaling at 1e3 and 1e4 particles (a step at 1e5 takes seconds to minutes: the
+//     Jacobi-scaled BiCGSTAB needs ~1.75 sqrt(N) iterations), the two-level preconditioner
+//     (models/isph/ppe_two_level.hpp) at 1e3 to 1e6.
 // CPU time (the machine is shared): run with OMP_NUM_THREADS=1.
 #include <benchmark/benchmark.h>
 
@@ -64,10 +66,12 @@ BENCHMARK(BM_IsphPpeApply<float>)
     ->ArgsProduct({{100, 316, 1000}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
+// mode 0: matrix-free operator, Jacobi; 1: stored operator, Jacobi; 2: stored operator, two-level
 void BM_IsphStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   ip::Config c = square_tank(n, 5000);
   c.ppe_stored = state.range(1) != 0;
+  if (state.range(1) == 2) c.ppe_preconditioner = ip::Config::Preconditioner::two_level;
   ip::Isph<double, 2> m(c);
   for (int k = 0; k < 5; ++k) m.step();  // past the cold first solve
   const long long it0 = m.ppe_iterations_total(), s0 = m.ppe_solves();
@@ -88,8 +92,11 @@ void BM_IsphStep(benchmark::State& state) {
   state.counters["ppe_share"] = wall > 0.0 ? (m.ppe_seconds() - ppe0) / wall : 0.0;
 }
 BENCHMARK(BM_IsphStep)
-    ->ArgNames({"n", "stored"})
-    ->ArgsProduct({{32, 100}, {0, 1}})
+    ->ArgNames({"n", "mode"})
+    ->ArgsProduct({{32, 100}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond);
+// the two-level preconditioner at 1e5 and 1e6 particles (Jacobi needs 550 and 1750 iterations a step there)
+BENCHMARK(BM_IsphStep)->ArgNames({"n", "mode"})->Args({316, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IsphStep)->ArgNames({"n", "mode"})->Args({1000, 2})->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

@@ -31,6 +31,7 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
                           const std::string& accuracy = "");
 
 // ISPH: particles, wall points, steps; the rate of docs/PERFORMANCE.md "ISPH".
-CostEstimate isph_cost(double particles, double wall_points, int dim, double steps, bool stored = true);
+CostEstimate isph_cost(double particles, double wall_points, int dim, double steps, bool stored = true,
+                       bool two_level = false);
 
 }  // namespace polymech::io

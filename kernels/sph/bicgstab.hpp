@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "solvers/krylov.hpp"
 
@@ -24,9 +25,16 @@ double dotp(const char* label, const View1<T>& a, const View1<T>& b, Index n) {
 }
 }  // namespace detail
 
+// No preconditioner beyond the operator's own row scaling (the default).
+struct NoPreconditioner {};
+
 // x: initial guess on entry (warm start; replaced by zero when its residual exceeds |b|), solution on exit. Stops at |b - A x| / |b| <= tolerance.
-template <class Op, class T>
-solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x, const solvers::SolverOptions& o) {
+// M: a right preconditioner, M.apply(r, z) giving z ~ A^-1 r (A M^-1 y = b, x = M^-1 y; the residual
+// the iteration tracks is still b - A x); NoPreconditioner leaves the plain iteration, unchanged to the bit.
+template <class Op, class T, class Prec = NoPreconditioner>
+solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x, const solvers::SolverOptions& o,
+                              const Prec& M = {}) {
+  constexpr bool preconditioned = !std::is_same_v<Prec, NoPreconditioner>;
   using solvers::SolveStatus;
   const auto t0 = std::chrono::steady_clock::now();
   solvers::SolveResult res;
@@ -46,6 +54,12 @@ solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x,
   }
   View1<T> r("polymech::sph::bicgstab_r", n), r0("polymech::sph::bicgstab_r0", n), p("polymech::sph::bicgstab_p", n),
       v("polymech::sph::bicgstab_v", n), s("polymech::sph::bicgstab_s", n), t("polymech::sph::bicgstab_t", n);
+  // M^-1 p and M^-1 s (preconditioned only; otherwise p and s themselves)
+  View1<T> ph = p, sh = s;
+  if constexpr (preconditioned) {
+    ph = View1<T>("polymech::sph::bicgstab_ph", n);
+    sh = View1<T>("polymech::sph::bicgstab_sh", n);
+  }
   A.apply(x, r);
   Kokkos::parallel_for(
       "polymech::sph::bicgstab_init", range(n), KOKKOS_LAMBDA(const Index i) {
@@ -70,19 +84,21 @@ solvers::SolveResult bicgstab(const Op& A, const View1<T>& b, const View1<T>& x,
     if (res.iterations >= o.max_iterations)
       return done(SolveStatus::max_iterations, "BiCGSTAB: reached " + std::to_string(o.max_iterations) +
                                                    " iterations at relative residual " + std::to_string(rel));
-    A.apply(p, v);
+    if constexpr (preconditioned) M.apply(p, ph);
+    A.apply(ph, v);
     const double r0v = detail::dotp("polymech::sph::bicgstab_dot", r0, v, n);
     if (r0v == 0.0 || !std::isfinite(r0v)) return done(SolveStatus::breakdown_pap, "BiCGSTAB: r0^T A p vanished");
     const T alpha = T(rho / r0v);
     Kokkos::parallel_for(
         "polymech::sph::bicgstab_s", range(n), KOKKOS_LAMBDA(const Index i) { s(i) = r(i) - alpha * v(i); });
-    A.apply(s, t);
+    if constexpr (preconditioned) M.apply(s, sh);
+    A.apply(sh, t);
     const double tt = detail::dotp("polymech::sph::bicgstab_dot", t, t, n);
     const double ts = detail::dotp("polymech::sph::bicgstab_dot", t, s, n);
     const T omega = tt > 0.0 ? T(ts / tt) : T(0);
     Kokkos::parallel_for(
         "polymech::sph::bicgstab_update", range(n), KOKKOS_LAMBDA(const Index i) {
-          x(i) += alpha * p(i) + omega * s(i);
+          x(i) += alpha * ph(i) + omega * sh(i);
           r(i) = s(i) - omega * t(i);
         });
     ++res.iterations;

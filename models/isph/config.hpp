@@ -78,6 +78,11 @@ struct Config {
   // value per pair of the three lists in memory) or recomputed in every apply (false: matrix-free, no
   // per-pair memory). Both give the same pressure to the bit (docs/PERFORMANCE.md, ISPH).
   bool ppe_stored = true;
+  // PPE preconditioner: Jacobi (the rows scaled by their diagonal: ~1.75 sqrt(N) BiCGSTAB iterations) or
+  // two-level (Jacobi smoothing plus a coarse correction on aggregates of ppe_coarse_cell x ... spacings,
+  // models/isph/ppe_two_level.hpp; needs the stored operator; not in the paper).
+  enum class Preconditioner { jacobi, two_level } ppe_preconditioner = Preconditioner::jacobi;
+  double ppe_coarse_cell = 4.0;     // [l0] side of an aggregate of the two-level preconditioner
   EffectSet effects;
 };
 

@@ -34,6 +34,7 @@
 #include "common/state.hpp"
 #include "isph/config.hpp"
 #include "isph/effect_table.hpp"
+#include "isph/ppe_two_level.hpp"
 #include "isph/setup.hpp"
 #include "neighbors/neighbor_search.hpp"
 #include "particles/reductions.hpp"
@@ -423,7 +424,13 @@ class Isph {
       ppe_coef_[1] = op.fluid_coef;
       ppe_coef_[2] = op.wall_coef;
     }
-    const auto r = sph::bicgstab(op, f_.rhs, f_.pressure, opts_);  // warm start: p^n in f_.pressure
+    solvers::SolveResult r;
+    if (cfg_.ppe_preconditioner == Config::Preconditioner::two_level) {
+      two_level_.setup(op, box_, cfg_.ppe_coarse_cell * cfg_.spacing);
+      r = sph::bicgstab(op, f_.rhs, f_.pressure, opts_, two_level_);
+    } else {
+      r = sph::bicgstab(op, f_.rhs, f_.pressure, opts_);  // warm start: p^n in f_.pressure
+    }
     last_.iterations = r.iterations;
     last_.residual = r.true_relative_residual;
     last_.history = r.history;
@@ -667,6 +674,7 @@ class Isph {
   sph::Fluid<T, D> f_;
   sph::WallPoints<T, D> wp_;
   View1<T> diag_;
+  TwoLevelPpe<T, D, PressureOperator<T, D>> two_level_;  // ppe_preconditioner two_level only (empty otherwise)
   View1<T> ppe_coef_[3];  // the PPE operator's stored pair coefficients (ppe_stored): ghost, fluid, wall lists
   neighbors::NeighborSearch<T, D> search_ff_, search_fw_, search_gf_;
   neighbors::NeighborList ff_, fw_, gf_;

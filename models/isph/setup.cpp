@@ -158,6 +158,8 @@ BodyContact body_contact(const Config& c) {
 
 std::string check(const Config& c) {
   if (c.dim != 2 && c.dim != 3) return "dim must be 2 or 3";
+  if (c.ppe_preconditioner == Config::Preconditioner::two_level && !c.ppe_stored)
+    return "the two-level PPE preconditioner needs the stored operator (fluid.ppe_operator = \"stored\")";
   if (c.effects.has("rigid_body")) {
     if (c.dim != 2) return "the effect 'rigid_body' (eqs. (31)-(43)) is 2D only";
     if (!(c.body.diameter > 2 * c.spacing)) return "the body's diameter must be more than 2 particle spacings";
