@@ -11,12 +11,17 @@
 //        scaled operator, whose diagonal is 1), two operator products per application.
 //
 // The coarse matrix is assembled and solved on the host (serial, deterministic: the same result with any
-// thread count); the smoothing, restriction and prolongation are Kokkos kernels. On a GPU each application
-// copies the coarse vectors (N / cell^D values) both ways.
+// thread count); the smoothing, restriction and prolongation are Kokkos kernels. Host builds only: under
+// nvcc Eigen's SparseLU calls host functions from its __host__ __device__ dense solves (error 20014-D), so a
+// CUDA build has the stub at the end of this file and the model refuses the option.
 #pragma once
 
+#include "core/kokkos_shim.hpp"
+
+#if !defined(KOKKOS_ENABLE_CUDA)
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -24,10 +29,11 @@
 #include <string>
 #include <vector>
 
-#include "core/kokkos_shim.hpp"
 #include "neighbors/neighbor_list.hpp"
 
 namespace polymech::isph {
+
+#if !defined(KOKKOS_ENABLE_CUDA)
 
 // Kernels of the two-level preconditioner (public, outside the class: nvcc needs lambdas in public scope).
 namespace two_level_detail {
@@ -66,6 +72,7 @@ void prolong(const View1<double>& ec, const Kokkos::View<Index*, MemSpace>& agg,
 template <class T, int D, class Op>
 class TwoLevelPpe {
  public:
+  static constexpr bool available = true;
   // The aggregates and the coarse operator for the operator `op` as it is now (its stored coefficients,
   // lists, densities and surface flags): once per step, before the solve. `box`: the tank's inner size.
   void setup(const Op& op, const double* box, double cell) {
@@ -214,5 +221,20 @@ class TwoLevelPpe {
   View1<T> az_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
 };
+
+#else  // CUDA builds: not available (see the header)
+
+template <class T, int D, class Op>
+class TwoLevelPpe {
+ public:
+  static constexpr bool available = false;
+  void setup(const Op&, const double*, double) {
+    throw std::logic_error("isph: the two-level PPE preconditioner is not built for CUDA");
+  }
+  void apply(const View1<T>&, const View1<T>&) const {}
+  Index coarse_size() const { return 0; }
+};
+
+#endif
 
 }  // namespace polymech::isph
