@@ -12,7 +12,8 @@
 //   -> density eqs. (13) + (18) and the free surface (rho_i < beta rho0: p = 0)
 //   -> [viscosity] ghost velocities (23), (27)-(30), u* = u + dt (nu lap u + g) (3), (11), (21)
 //   -> ghost velocities of u*, PPE source (4) with div u* (12), (22) [+ stabilization alpha term]
-//   -> BiCGSTAB on the matrix-free PPE (10), (20) with Neumann wall pressure (25)-(26), warm start
+//   -> BiCGSTAB on the PPE (10), (20) with Neumann wall pressure (25)-(26), warm start: its pair coefficients
+//      stored once per step (or matrix-free), Jacobi-scaled (or the two-level preconditioner, ppe_two_level.hpp)
 //   -> wall pressures, projection (5) with grad p (9), (19) -> x^{n+1} = x^n + dt u^{n+1}.
 //   -> [rigid_body] force and moment from the reactions at the body's points, Euler update (CSS).
 // Walls: the tank of an axis-aligned box (sides and bottom, open top) and, with `rigid_body`, a 2D
