@@ -216,27 +216,36 @@ TEST(IsphPpe, StoredCoefficientsGiveTheMatrixFreeOperatorToTheBit) {
 // The two-level preconditioner (models/isph/ppe_two_level.hpp) solves the same PPE in fewer iterations:
 // the first (cold) solve of a tank at rest of 40 x 32 particles and of 80 x 64, pressures equal to the
 // Jacobi-preconditioned solve's within the tolerance, and the iteration count no longer growing with N.
+namespace {
+void two_level_against_jacobi(double l0) {
+  auto c = tank_config(2, l0, 0.2, 0.16, 2.5e-4);
+  c.tolerance = 1e-10;
+  ip::Isph<double, 2> jacobi(c);
+  jacobi.step();
+  c.ppe_preconditioner = ip::Config::Preconditioner::two_level;
+  ip::Isph<double, 2> two(c);
+  two.step();
+  ASSERT_TRUE(two.health().finite) << two.health().problem;
+  const auto pj = jacobi.host_pressure(), pt = two.host_pressure();
+  double diff = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < pj.size(); ++i) {
+    diff = std::max(diff, std::fabs(pt[i] - pj[i]));
+    norm = std::max(norm, std::fabs(pj[i]));
+  }
+  std::printf("%zu particles: BiCGSTAB iterations %d (Jacobi), %d (two-level); largest pressure difference %.2e of %.2e\n",
+              pj.size(), jacobi.last_solve().iterations, two.last_solve().iterations, diff, norm);
+  EXPECT_LT(diff, 1e-6 * norm);
+  EXPECT_LT(two.last_solve().iterations, jacobi.last_solve().iterations / 2);
+}
+}  // namespace
+
 TEST(IsphPpe, TwoLevelPreconditionerSolvesTheSamePpeInFewerIterations) {
-  if (!ip::TwoLevelPpe<double, 2, ip::PressureOperator<double, 2>>::available) GTEST_SKIP() << "host builds only";
-  for (const double l0 : {0.005, 0.0025}) {
-    auto c = tank_config(2, l0, 0.2, 0.16, 2.5e-4);
-    c.tolerance = 1e-10;
-    ip::Isph<double, 2> jacobi(c);
-    jacobi.step();
-    c.ppe_preconditioner = ip::Config::Preconditioner::two_level;
-    ip::Isph<double, 2> two(c);
-    two.step();
-    ASSERT_TRUE(two.health().finite) << two.health().problem;
-    const auto pj = jacobi.host_pressure(), pt = two.host_pressure();
-    double diff = 0.0, norm = 0.0;
-    for (std::size_t i = 0; i < pj.size(); ++i) {
-      diff = std::max(diff, std::fabs(pt[i] - pj[i]));
-      norm = std::max(norm, std::fabs(pj[i]));
-    }
-    std::printf("%zu particles: BiCGSTAB iterations %d (Jacobi), %d (two-level); largest pressure difference %.2e of %.2e\n",
-                pj.size(), jacobi.last_solve().iterations, two.last_solve().iterations, diff, norm);
-    EXPECT_LT(diff, 1e-6 * norm);
-    EXPECT_LT(two.last_solve().iterations, jacobi.last_solve().iterations / 2);
+  // a constant branch, not an early return (nvcc: "loop is not reachable" after a constant GTEST_SKIP)
+  if constexpr (ip::TwoLevelPpe<double, 2, ip::PressureOperator<double, 2>>::available) {
+    two_level_against_jacobi(0.005);
+    two_level_against_jacobi(0.0025);
+  } else {
+    GTEST_SKIP() << "host builds only";
   }
 }
 
