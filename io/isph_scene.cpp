@@ -92,6 +92,9 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
                              ? isph::Config::Preconditioner::two_level
                              : isph::Config::Preconditioner::jacobi;
   c.ppe_coarse_cell = fluid.real("ppe_coarse_cell", 4.0, Range{1.0, 64.0, false, false, "particle spacings (side of an aggregate)"});
+  if (c.ppe_preconditioner == isph::Config::Preconditioner::two_level && !c.ppe_stored)
+    fluid.fail("ppe_preconditioner", "\"two_level\" needs fluid.ppe_operator = \"stored\" (its coarse matrix is built "
+                                     "from the stored coefficients); allowed with \"matrix_free\": \"jacobi\"");
   fluid.finish();
 
   const SceneTable tank = root.table("tank");

@@ -94,4 +94,12 @@ TEST(IsphScenes, BadValuesAreRefused) {
                "effects = [\"rigid_body\"]", {"rigid_body", "[body]"});
   expect_error(replace_once(kBase, "case = \"dam_break\"", "case = \"sloshing\""), "case = \"sloshing\"",
                {"tank.case", "hydrostatic"});
+  // the PPE options of 2026-11-24
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nppe_operator = \"assembled\""), "ppe_operator",
+               {"fluid.ppe_operator", "stored", "matrix_free"});
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nppe_preconditioner = \"ilu\""), "ppe_preconditioner",
+               {"fluid.ppe_preconditioner", "jacobi", "two_level"});
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nppe_operator = \"matrix_free\"\nppe_preconditioner = \"two_level\""),
+               "ppe_preconditioner", {"fluid.ppe_preconditioner", "stored", "jacobi"});
+  expect_error(replace_once(kBase, "[fluid]", "[fluid]\nppe_coarse_cell = 0.5"), "ppe_coarse_cell", {"fluid.ppe_coarse_cell"});
 }
