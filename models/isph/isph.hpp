@@ -94,9 +94,6 @@ class Isph {
     if (!why.empty()) throw std::invalid_argument("isph: " + why);
     if (c.dim != D) throw std::invalid_argument("isph: the configuration is " + std::to_string(c.dim) + "D, the model " +
                                                 std::to_string(D) + "D");
-    if (c.ppe_preconditioner == Config::Preconditioner::two_level && !decltype(two_level_)::available)
-      throw std::invalid_argument("isph: fluid.ppe_preconditioner = \"two_level\" is not available in a CUDA build (its "
-                                  "coarse solve is Eigen's SparseLU on the host); use \"jacobi\"");
     viscosity_ = c.effects.has("viscosity");
     stabilization_ = c.effects.has("stabilization");
     body_ = D == 2 && c.effects.has("rigid_body") && c.body.diameter > 0;

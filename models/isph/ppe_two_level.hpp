@@ -6,34 +6,30 @@
 //   P: piecewise constant on the aggregates (prolongation z_i += e_I, I the aggregate of i; P^T sums);
 //   Ac = P^T A P, the Galerkin product of the row-scaled operator A the Krylov solver sees, formed from the
 //        operator's stored pair coefficients (ghost couplings included) and factorised by a sparse LU
-//        (Eigen) once per step;
+//        on the host (solvers::HostSparseLU) once per step;
 //   M^-1 r: z = w r; z += P Ac^-1 P^T (r - A z); z += w (r - A z)   (w = 2/3: Jacobi smoothing of the
 //        scaled operator, whose diagonal is 1), two operator products per application.
 //
 // The coarse matrix is assembled and solved on the host (serial, deterministic: the same result with any
-// thread count); the smoothing, restriction and prolongation are Kokkos kernels. Host builds only: under
-// nvcc Eigen's SparseLU calls host functions from its __host__ __device__ dense solves (error 20014-D), so a
-// CUDA build has the stub at the end of this file and the model refuses the option.
+// thread count); the smoothing, restriction and prolongation are Kokkos kernels. On a GPU every
+// application copies the coarse residual to the host and the correction back (one value per aggregate).
+// The LU is a compiled host unit (kernels/solvers/host_sparse_lu.cpp), as Eigen's SparseLU does not
+// compile under nvcc.
 #pragma once
 
 #include "core/kokkos_shim.hpp"
-
-#if !defined(KOKKOS_ENABLE_CUDA)
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
-#endif
+#include "solvers/host_sparse_lu.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "neighbors/neighbor_list.hpp"
 
 namespace polymech::isph {
-
-#if !defined(KOKKOS_ENABLE_CUDA)
 
 // Kernels of the two-level preconditioner (public, outside the class: nvcc needs lambdas in public scope).
 namespace two_level_detail {
@@ -72,7 +68,6 @@ void prolong(const View1<double>& ec, const Kokkos::View<Index*, MemSpace>& agg,
 template <class T, int D, class Op>
 class TwoLevelPpe {
  public:
-  static constexpr bool available = true;
   // The aggregates and the coarse operator for the operator `op` as it is now (its stored coefficients,
   // lists, densities and surface flags): once per step, before the solve. `box`: the tank's inner size.
   void setup(const Op& op, const double* box, double cell) {
@@ -106,7 +101,7 @@ class TwoLevelPpe {
     start_ = to_device("polymech::isph::two_level_start", count);
     members_ = to_device("polymech::isph::two_level_members", members);
     rc_ = View1<double>("polymech::isph::two_level_rc", static_cast<std::size_t>(cells));
-    ec_ = View1<double>("polymech::isph::two_level_ec", static_cast<std::size_t>(cells));
+    rc_host_ = Kokkos::create_mirror_view(rc_);  // rc_ itself in host builds
     az_ = View1<T>("polymech::isph::two_level_az", static_cast<std::size_t>(n));
     assemble(agg, count, members);
   }
@@ -118,13 +113,10 @@ class TwoLevelPpe {
     tl::scale(r, z, w);
     op_.apply(z, az_);
     tl::restrict_residual(r, az_, start_, members_, rc_);
-    auto rh = Kokkos::create_mirror_view_and_copy(HostSpace(), rc_);
-    Eigen::Map<const Eigen::VectorXd> rv(rh.data(), static_cast<Eigen::Index>(rh.extent(0)));
-    const Eigen::VectorXd e = lu_.solve(rv);
-    auto eh = Kokkos::create_mirror_view(ec_);
-    for (Index I = 0; I < coarse_size_; ++I) eh(I) = e(I);
-    Kokkos::deep_copy(ec_, eh);
-    tl::prolong(ec_, agg_, z);
+    Kokkos::deep_copy(rc_host_, rc_);
+    lu_.solve(rc_host_.data());  // in place: the coarse correction
+    Kokkos::deep_copy(rc_, rc_host_);
+    tl::prolong(rc_, agg_, z);
     op_.apply(z, az_);
     tl::smooth(r, az_, z, w);
   }
@@ -160,7 +152,8 @@ class TwoLevelPpe {
     auto gc = Kokkos::create_mirror_view_and_copy(HostSpace(), o.ghost_coef);
     if (fc.extent(0) < static_cast<std::size_t>(o.ff->num_pairs))
       throw std::logic_error("isph: the two-level preconditioner needs the stored PPE operator");
-    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<std::int64_t> rows, cols;
+    std::vector<double> values;
     std::vector<double> row(static_cast<std::size_t>(coarse_size_), 0.0);
     std::vector<char> listed(static_cast<std::size_t>(coarse_size_), 0);
     std::vector<Index> touched;
@@ -201,40 +194,28 @@ class TwoLevelPpe {
       }
       if (touched.empty()) add(I, 1.0);  // an empty cell: an identity row
       for (const Index J : touched) {
-        entries.emplace_back(I, J, row[static_cast<std::size_t>(J)]);
+        rows.push_back(I);
+        cols.push_back(J);
+        values.push_back(row[static_cast<std::size_t>(J)]);
         row[static_cast<std::size_t>(J)] = 0.0;
         listed[static_cast<std::size_t>(J)] = 0;
       }
     }
-    Eigen::SparseMatrix<double> Ac(coarse_size_, coarse_size_);
-    Ac.setFromTriplets(entries.begin(), entries.end());
-    Ac.makeCompressed();
-    lu_.compute(Ac);
-    if (lu_.info() != Eigen::Success)
+    try {
+      lu_.factor(coarse_size_, rows, cols, values);
+    } catch (const std::runtime_error& e) {
       throw std::runtime_error("isph: the two-level preconditioner's coarse matrix (" + std::to_string(coarse_size_) +
-                               " aggregates) could not be factorised");
+                               " aggregates) could not be factorised: " + e.what());
+    }
   }
   Op op_;
   Index coarse_size_ = 0;
   Kokkos::View<Index*, MemSpace> agg_, start_, members_;
-  View1<double> rc_, ec_;
+  View1<double> rc_;
+  // spelled through create_mirror_view (HostMirror in Kokkos 3.x-4.x, host_mirror_type later)
+  decltype(Kokkos::create_mirror_view(std::declval<View1<double>>())) rc_host_;
   View1<T> az_;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
+  solvers::HostSparseLU lu_;
 };
-
-#else  // CUDA builds: not available (see the header)
-
-template <class T, int D, class Op>
-class TwoLevelPpe {
- public:
-  static constexpr bool available = false;
-  void setup(const Op&, const double*, double) {
-    throw std::logic_error("isph: the two-level PPE preconditioner is not built for CUDA");
-  }
-  void apply(const View1<T>&, const View1<T>&) const {}
-  Index coarse_size() const { return 0; }
-};
-
-#endif
 
 }  // namespace polymech::isph

@@ -1,0 +1,41 @@
+// A sparse LU factorisation on the host behind an interface free of Eigen and Kokkos (Eigen's SparseLU
+// with the COLAMD ordering, in host_sparse_lu.cpp).
+//
+// Why a compiled unit: under nvcc Eigen's SparseLU does not compile (its supernodal solve instantiates
+// dense triangular solves marked __host__ __device__ that call host functions, error 20014-D; see
+// docs/DEVELOPING.md). host_sparse_lu.cpp is compiled by the host compiler in every build (nvcc_wrapper
+// --host-only in CUDA builds), so a caller in a CUDA translation unit (ISPH's two-level preconditioner,
+// models/isph/ppe_two_level.hpp) includes only this header.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace polymech::solvers {
+
+class HostSparseLU {
+ public:
+  HostSparseLU();
+  ~HostSparseLU();
+  HostSparseLU(HostSparseLU&&) noexcept;
+  HostSparseLU& operator=(HostSparseLU&&) noexcept;
+  HostSparseLU(const HostSparseLU&) = delete;
+  HostSparseLU& operator=(const HostSparseLU&) = delete;
+
+  // Factorise the n x n matrix with the entries (rows[k], cols[k], values[k]) (repeated entries are
+  // summed). Throws std::invalid_argument for inconsistent input, std::runtime_error when the
+  // factorisation fails (a singular matrix); the previous factorisation is then gone.
+  void factor(std::int64_t n, const std::vector<std::int64_t>& rows, const std::vector<std::int64_t>& cols,
+              const std::vector<double>& values);
+  // x <- A^-1 x, x holding size() values. Throws std::logic_error before a successful factor().
+  void solve(double* x) const;
+  std::int64_t size() const { return n_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::int64_t n_ = 0;
+};
+
+}  // namespace polymech::solvers
