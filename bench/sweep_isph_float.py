@@ -5,7 +5,7 @@ cylinder), with the CPU time of each run.
 
     /usr/bin/python3 bench/sweep_isph_float.py [--app build/ci/bin/isph]
         [--scene scenes/isph/floating_cylinder_small.toml] [--across 4 5 8 10 12.5] [--out out/sweep_isph_float]
-        [--plot-only]
+        [--precision double|float] [--plot-only]
 
 Each run is the scene with fluid.spacing = D / across and dt = 0.1 s/m x spacing (1e-3 s at 1 cm: CFL 0.4 at
 the surge speed allows 1.2e-3 s; --dt-per-spacing changes the 0.1), one thread, no snapshots. Writes OUT/sweep.csv (across, spacing, dt,
@@ -23,7 +23,7 @@ import subprocess
 import sys
 
 
-def run(app, text, work, across, dt_per_spacing=0.1):
+def run(app, text, work, across, dt_per_spacing=0.1, precision="double"):
     os.makedirs(work, exist_ok=True)
     D = float(re.search(r"(?m)^diameter = ([0-9.eE+-]+)", text).group(1))
     spacing = D / across
@@ -36,7 +36,8 @@ def run(app, text, work, across, dt_per_spacing=0.1):
         f.write(text)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMP_WAIT_POLICY="passive")
-    subprocess.run([app, "--scene", scene, "--threads", "1", "--quiet", "--out", work], check=True, env=env,
+    subprocess.run([app, "--scene", scene, "--threads", "1", "--precision", precision, "--quiet", "--out", work],
+                   check=True, env=env,
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
@@ -49,7 +50,7 @@ def run(app, text, work, across, dt_per_spacing=0.1):
     ys = [float(r["body_y"]) for r in rows if float(r["time"]) >= end - window]
     mean = sum(ys) / len(ys)
     scatter = (sum((y - mean) ** 2 for y in ys) / len(ys)) ** 0.5
-    return {"across": across, "spacing": spacing, "dt": dt, "particles": s["particles"], "steps": s["steps"],
+    return {"across": across, "precision_bits": 32 if precision == "float" else 64, "spacing": spacing, "dt": dt, "particles": s["particles"], "steps": s["steps"],
             "draft_volume": s["draft_over_diameter"], "draft_surface": s["draft_over_diameter_surface_particles"],
             "archimedes": arch, "error_volume": s["draft_over_diameter"] / arch - 1,
             "error_surface": s["draft_over_diameter_surface_particles"] / arch - 1,
@@ -66,12 +67,20 @@ def plot(rows, path):
         print("sweep_isph_float.py: no matplotlib, no plot", file=sys.stderr)
         return
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    t = [r["cpu_seconds"] for r in rows]
-    ax.semilogx(t, [100 * r["error_volume"] for r in rows], "o-", label="level from the water's volume")
-    ax.semilogx(t, [100 * r["error_surface"] for r in rows], "s--", label="level from the surface particles")
-    for r in rows:
-        ax.annotate(f"D/l0={r['across']:g}", (r["cpu_seconds"], 100 * r["error_volume"]), fontsize=7,
-                    textcoords="offset points", xytext=(4, 4))
+    # rows of one precision, or of both (--plot-only on the CSVs of a double and a float sweep concatenated)
+    groups = sorted({int(r.get("precision_bits", 64)) for r in rows}, reverse=True)
+    for bits in groups:
+        rs = sorted((r for r in rows if int(r.get("precision_bits", 64)) == bits), key=lambda r: r["cpu_seconds"])
+        tag = "" if len(groups) == 1 else (", double" if bits == 64 else ", float")
+        t = [r["cpu_seconds"] for r in rs]
+        ax.semilogx(t, [100 * r["error_volume"] for r in rs], "o-" if bits == 64 else "^-",
+                    label="level from the water's volume" + tag)
+        ax.semilogx(t, [100 * r["error_surface"] for r in rs], "s--" if bits == 64 else "v--",
+                    label="level from the surface particles" + tag)
+        if bits == groups[0]:
+            for r in rs:
+                ax.annotate(f"D/l0={r['across']:g}", (r["cpu_seconds"], 100 * r["error_volume"]), fontsize=7,
+                            textcoords="offset points", xytext=(4, 4))
     for y in (-2, 2):
         ax.axhline(y, color="grey", lw=0.8, ls=":", label="issue: +-2 %" if y < 0 else None)
     ax.axhline(0, color="black", lw=0.6)
@@ -91,7 +100,10 @@ def main():
     p.add_argument("--out", default="out/sweep_isph_float")
     p.add_argument("--dt-per-spacing", type=float, default=0.1,
                    help="dt / spacing in s/m (0.1: 1e-3 s at 1 cm; the held body's excess force falls with dt)")
-    p.add_argument("--plot-only", action="store_true", help="redraw OUT/accuracy_cost.png from OUT/sweep.csv")
+    p.add_argument("--precision", choices=["double", "float"], default="double",
+                   help="floating-point precision of the kernels (the app's --precision)")
+    p.add_argument("--plot-only", action="store_true",
+                   help="redraw OUT/accuracy_cost.png from OUT/sweep.csv (rows of both precisions: one curve each)")
     a = p.parse_args()
     if a.plot_only:
         rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(a.out, "sweep.csv")))]
@@ -102,7 +114,7 @@ def main():
     text = open(a.scene).read()
     rows = []
     for n in a.across:
-        r = run(a.app, text, os.path.join(a.out, f"across{n:g}"), n, a.dt_per_spacing)
+        r = run(a.app, text, os.path.join(a.out, f"across{n:g}"), n, a.dt_per_spacing, a.precision)
         rows.append(r)
         print(f"D/l0 = {n:g}: {r['particles']} particles, {r['steps']} steps: draft {r['draft_volume']:.4f} "
               f"({100 * r['error_volume']:+.1f} %), surface particles {r['draft_surface']:.4f} "

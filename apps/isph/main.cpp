@@ -252,7 +252,9 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   j["alpha"] = c.alpha;
   j["ppe_operator"] = c.ppe_stored ? "stored" : "matrix_free";
   j["ppe_preconditioner"] = c.ppe_preconditioner == pm::isph::Config::Preconditioner::two_level ? "two_level" : "jacobi";
-  j["surface_detection"] = c.surface_detection == pm::isph::SurfaceDetection::divergence ? "divergence" : "density";
+  j["surface_detection"] = c.surface_detection == pm::isph::SurfaceDetection::divergence              ? "divergence"
+                           : c.surface_detection == pm::isph::SurfaceDetection::divergence_or_density ? "divergence_or_density"
+                                                                                                      : "density";
   j["pressure_gradient"] = c.pressure_gradient == pm::isph::PressureGradient::difference ? "difference" : "symmetric";
   j["ghost_interpolation"] = c.ghost_interpolation == pm::isph::GhostInterpolation::linear ? "linear" : "shepard";
   j["steps"] = stats.steps;

@@ -69,6 +69,7 @@ struct Params {
   bool difference_gradient = false;  // grad p by (p_j - p_i), (p_c - p_i) instead of eqs. (9), (19)
   bool divergence_surface = false;  // free surface by the divergence of position (< surface_divr), not the density
   T surface_divr = T(1.5);
+  bool density_surface_too = false;  // with divergence_surface: also flag rho < beta rho0 (either test)
   bool linear_ghosts = true;  // ghost values by a linear fit (exact for a hydrostatic field); false: Shepard, eq. (23)
   bool surface_correction = true;  // free-surface particles: eq. (9) divided by rho_i / rho0 (the kernel's
                                    // share inside the fluid), see FluidPressureGradient
@@ -147,7 +148,8 @@ struct WallPositionDivergence {
   KOKKOS_FORCEINLINE_FUNCTION void finish(Index i, T& acc) const {
     const T divr = f.divr(i) + acc;
     f.divr(i) = divr;
-    f.surface(i) = (divr < c.surface_divr && f.rho(i) < c.rho0) ? 1 : 0;
+    const T rho = f.rho(i);
+    f.surface(i) = ((divr < c.surface_divr && rho < c.rho0) || (c.density_surface_too && rho < c.beta * c.rho0)) ? 1 : 0;
   }
   KOKKOS_INLINE_FUNCTION static void join(T& a, const T& b) { a += b; }
 };

@@ -28,7 +28,10 @@ enum class PressureGradient { difference, symmetric };
 // the surface). The density test alone is fooled when the top layer compacts onto the one below (its
 // density rises back over the threshold although nothing lies above it: the surface loses its p = 0
 // there, docs/VALIDATION.md); the position divergence measures the missing part of the support.
-enum class SurfaceDetection { density, divergence };
+// divergence_or_density flags a particle when either test does: the divergence keeps the top layer
+// flagged, the density also sets p = 0 at water torn apart inside the tank (the jet squeezed out under a
+// dense body landing on the bottom, which the divergence test alone let blow up: docs/VALIDATION.md).
+enum class SurfaceDetection { density, divergence, divergence_or_density };
 
 // A floating circular cylinder (2D) of IGCB cells (effect `rigid_body`, eqs. (31)-(43)).
 struct Body {

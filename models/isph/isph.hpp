@@ -111,7 +111,8 @@ class Isph {
     par_.slip = c.wall == WallCondition::slip;
     par_.linear_ghosts = c.ghost_interpolation == GhostInterpolation::linear;
     par_.difference_gradient = c.pressure_gradient == PressureGradient::difference;
-    par_.divergence_surface = c.surface_detection == SurfaceDetection::divergence;
+    par_.divergence_surface = c.surface_detection != SurfaceDetection::density;
+    par_.density_surface_too = c.surface_detection == SurfaceDetection::divergence_or_density;
     par_.surface_divr = T(c.surface_divergence > 0 ? c.surface_divergence : (D == 2 ? 1.5 : 2.4));
     par_.surface_correction = c.surface_correction;
     build_fluid();
