@@ -79,12 +79,13 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   c.surface_threshold =
       fluid.real("surface_threshold", 0.95, Range{0.5, 0.999, false, false, "free surface where rho < this x rho0"});
   c.surface_correction = fluid.boolean("surface_correction", true);
-  // free-surface particles: by the density (surface_threshold) or by the divergence of position
+  // free-surface particles: by the density (surface_threshold), by the divergence of position, or by either
   {
-    const std::string surface = fluid.choice("surface_detection", {"density", "divergence", "divergence_or_density"}, "density");
-    c.surface_detection = surface == "divergence"        ? isph::SurfaceDetection::divergence
+    const std::string surface =
+        fluid.choice("surface_detection", {"density", "divergence", "divergence_or_density"}, "density");
+    c.surface_detection = surface == "divergence"              ? isph::SurfaceDetection::divergence
                           : surface == "divergence_or_density" ? isph::SurfaceDetection::divergence_or_density
-                                                         : isph::SurfaceDetection::density;
+                                                               : isph::SurfaceDetection::density;
   }
   c.surface_divergence = fluid.real("surface_divergence", 0.0,
                                     Range{0.0, 3.0, false, false, "free surface where div r < this (0: 1.5 in 2D, 2.4 in 3D)"});
