@@ -15,43 +15,22 @@ OUT/sweep.csv (n, precision, spacing, dt, particles, steps, the errors, the shif
 iterations, particles put back, CPU seconds) and OUT/accuracy_cost.png. Optional, outside ctest.
 """
 import argparse
-import csv
-import json
 import os
-import re
-import resource
-import subprocess
 import sys
 
 import numpy as np
+
+from isph_sweep import read_rows, run_scene, scene_value, write_rows
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from isph_dam_break import MARTIN_MOYCE, WALL, best_shift, relative_errors  # noqa: E402
 
 
-def scene_value(text, key):
-    return float(re.search(rf"(?m)^{key} = ([0-9.eE+-]+)", text).group(1))
-
-
 def run(app, text, work, n, precision):
-    os.makedirs(work, exist_ok=True)
-    a = scene_value(text, "water_width")
     spacing0, dt0 = scene_value(text, "spacing"), scene_value(text, "dt")
-    spacing = a / n
+    spacing = scene_value(text, "water_width") / n
     dt = dt0 * spacing / spacing0
-    text = re.sub(r"(?m)^spacing = .*$", f"spacing = {spacing!r}", text)
-    text = re.sub(r"(?m)^dt = .*$", f"dt = {dt!r}", text)
-    text = re.sub(r"(?m)^snapshot_every = .*$", "snapshot_every = 0.0", text)
-    scene = os.path.join(work, "scene.toml")
-    with open(scene, "w") as f:
-        f.write(text)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMP_WAIT_POLICY="passive")
-    subprocess.run([app, "--scene", scene, "--threads", "1", "--precision", precision, "--quiet", "--out", work],
-                   check=True, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    s = json.load(open(os.path.join(work, "summary.json")))
+    s, cpu = run_scene(app, text, work, {"spacing": spacing, "dt": dt}, precision)
     f = np.array(s["front_positions"], dtype=float)
     f = f[f[:, 1] < WALL]
     T, Z = f[:, 0], f[:, 1]
@@ -109,7 +88,7 @@ def main():
     p.add_argument("--plot-only", action="store_true", help="redraw OUT/accuracy_cost.png from OUT/sweep.csv")
     a = p.parse_args()
     if a.plot_only:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(a.out, "sweep.csv")))]
+        rows = read_rows(os.path.join(a.out, "sweep.csv"))
         plot(rows, os.path.join(a.out, "accuracy_cost.png"))
         return
     if not os.path.exists(a.app):
@@ -123,10 +102,7 @@ def main():
             print(f"a/{n:g} {precision}: {r['particles']} particles, {r['steps']} steps: rms {100 * r['rms_error']:.1f} %"
                   f" (shifted by dT = {r['shift_T']:.3f}: {100 * r['rms_error_shifted']:.1f} %), Z(1, 2, 3) = "
                   f"{r['Z_T1']:.3f} {r['Z_T2']:.3f} {r['Z_T3']:.3f}, {r['cpu_seconds']:.0f} CPU s", flush=True)
-            with open(os.path.join(a.out, "sweep.csv"), "w", newline="") as f:
-                w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-                w.writeheader()
-                w.writerows(rows)
+            write_rows(os.path.join(a.out, "sweep.csv"), rows)
     plot(rows, os.path.join(a.out, "accuracy_cost.png"))
 
 

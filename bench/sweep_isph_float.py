@@ -15,38 +15,22 @@ ctest.
 """
 import argparse
 import csv
-import json
 import os
-import re
-import resource
-import subprocess
 import sys
+
+from isph_sweep import read_rows, run_scene, scene_value, write_rows
 
 
 def run(app, text, work, across, dt_per_spacing=0.1, precision="double"):
-    os.makedirs(work, exist_ok=True)
-    D = float(re.search(r"(?m)^diameter = ([0-9.eE+-]+)", text).group(1))
+    D = scene_value(text, "diameter")
     spacing = D / across
     dt = dt_per_spacing * spacing
-    text = re.sub(r"(?m)^spacing = .*$", f"spacing = {spacing!r}", text)
-    text = re.sub(r"(?m)^dt = .*$", f"dt = {dt!r}", text)
-    text = re.sub(r"(?m)^snapshot_every = .*$", "snapshot_every = 0.0", text)
-    scene = os.path.join(work, "scene.toml")
-    with open(scene, "w") as f:
-        f.write(text)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMP_WAIT_POLICY="passive")
-    subprocess.run([app, "--scene", scene, "--threads", "1", "--precision", precision, "--quiet", "--out", work],
-                   check=True, env=env,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    s = json.load(open(os.path.join(work, "summary.json")))
+    s, cpu = run_scene(app, text, work, {"spacing": spacing, "dt": dt}, precision)
     arch = s["archimedes_draft_over_diameter"]
     # the body's height over the averaging window (the series' last draft_average_last seconds)
     rows = list(csv.DictReader(open(os.path.join(work, "series.csv"))))
     end = float(rows[-1]["time"])
-    window = float(re.search(r"(?m)^draft_average_last = ([0-9.eE+-]+)", text).group(1))
+    window = scene_value(text, "draft_average_last")
     ys = [float(r["body_y"]) for r in rows if float(r["time"]) >= end - window]
     mean = sum(ys) / len(ys)
     scatter = (sum((y - mean) ** 2 for y in ys) / len(ys)) ** 0.5
@@ -106,7 +90,7 @@ def main():
                    help="redraw OUT/accuracy_cost.png from OUT/sweep.csv (rows of both precisions: one curve each)")
     a = p.parse_args()
     if a.plot_only:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(a.out, "sweep.csv")))]
+        rows = read_rows(os.path.join(a.out, "sweep.csv"))
         plot(rows, os.path.join(a.out, "accuracy_cost.png"))
         return
     if not os.path.exists(a.app):
@@ -119,10 +103,7 @@ def main():
         print(f"D/l0 = {n:g}: {r['particles']} particles, {r['steps']} steps: draft {r['draft_volume']:.4f} "
               f"({100 * r['error_volume']:+.1f} %), surface particles {r['draft_surface']:.4f} "
               f"({100 * r['error_surface']:+.1f} %), {r['cpu_seconds']:.0f} CPU s", flush=True)
-        with open(os.path.join(a.out, "sweep.csv"), "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-            w.writeheader()
-            w.writerows(rows)
+        write_rows(os.path.join(a.out, "sweep.csv"), rows)
     plot(rows, os.path.join(a.out, "accuracy_cost.png"))
 
 
