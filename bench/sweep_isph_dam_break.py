@@ -20,7 +20,7 @@ import sys
 
 import numpy as np
 
-from isph_sweep import read_rows, run_scene, scene_value, write_rows
+from sweep_runner import read_rows, run_scene, scene_value, write_rows
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from isph_dam_break import MARTIN_MOYCE, WALL, best_shift, relative_errors  # noqa: E402

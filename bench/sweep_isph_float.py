@@ -18,7 +18,7 @@ import csv
 import os
 import sys
 
-from isph_sweep import read_rows, run_scene, scene_value, write_rows
+from sweep_runner import read_rows, run_scene, scene_value, write_rows
 
 
 def run(app, text, work, across, dt_per_spacing=0.1, precision="double"):

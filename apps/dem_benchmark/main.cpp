@@ -40,10 +40,16 @@ void hertz_of(const pm::io::DemScene& s, double& m_star, double& r_star, double&
   }
 }
 
+// One impact of the scene in the scene's precision (the kernels' type; the measures are double).
+dm::ImpactMeasure impact(const pm::io::DemScene& s, double angle_deg, double restitution) {
+  const auto c = pm::io::dem_impact_config(s, angle_deg, restitution);
+  return s.header.precision == "float" ? dm::run_impact<float>(c) : dm::run_impact<double>(c);
+}
+
 void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
   const std::string prefix = "test" + std::to_string(s.test) + (s.target == "mesh" ? "_mesh_" : "_");
   if (s.test == 1 || s.test == 2) {
-    const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, s.restitutions[0]));
+    const auto got = impact(s, 0.0, s.restitutions[0]);
     total_steps += got.steps;
     double m_star, r_star, e_star, v;
     hertz_of(s, m_star, r_star, e_star, v);
@@ -68,7 +74,7 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
   } else if (s.test == 3) {
     nlohmann::json rows = nlohmann::json::array();
     for (double e : s.restitutions) {
-      const auto got = dm::run_impact(pm::io::dem_impact_config(s, 0.0, e));
+      const auto got = impact(s, 0.0, e);
       total_steps += got.steps;
       rows.push_back({e, got.normal_restitution});
       if (!quiet) std::printf("test 3: restitution %.2f -> measured %.4f\n", e, got.normal_restitution);
@@ -78,7 +84,7 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
     nlohmann::json rows = nlohmann::json::array();
     std::vector<double> in, out, vt, w;
     for (double angle : s.angles) {
-      const auto got = dm::run_impact(pm::io::dem_impact_config(s, angle, s.restitutions[0]));
+      const auto got = impact(s, angle, s.restitutions[0]);
       total_steps += got.steps;
       const double rebound = dm::rebound_angle_deg(got, s.impact.radius);
       rows.push_back({angle, rebound});

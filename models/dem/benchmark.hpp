@@ -37,9 +37,10 @@ double impact_overlap(const Dem<T>& m, double wall_z) {
   return r0 - (a.x[2] - wall_z);
 }
 
-// Runs until the contact has ended (or max_steps) and measures it.
-inline ImpactMeasure run_impact(const Config& c, double wall_z = 0.0, std::int64_t max_steps = 2000000) {
-  Dem<double> m(c);
+// Runs until the contact has ended (or max_steps) and measures it; T is the kernels' precision.
+template <class T = double>
+ImpactMeasure run_impact(const Config& c, double wall_z = 0.0, std::int64_t max_steps = 2000000) {
+  Dem<T> m(c);
   ImpactMeasure out;
   for (int k = 0; k < 3; ++k) out.v_before[k] = c.spheres[0].velocity[k];
   m.prepare();

@@ -137,6 +137,32 @@ TEST(ChungOoi, Test4ReboundAnglesFollowTheSlidingLimitAndTurnNegativeInStickSlip
   }
 }
 
+
+// The kernels in float (dem_benchmark --precision float) give the double run's impacts to the float
+// round-off: measured at 400 steps per contact, test 1's peak force -1.4e-6 (double +2.2e-6) from Hertz,
+// test 4's rebound at 20 degrees (stick then slip) and 45 (gross sliding) 5e-5 degrees from double's
+// (bench/sweep_dem_impacts.py: below 400 steps per contact float and double agree, above it float's error
+// stalls at its round-off while double's keeps falling).
+TEST(ChungOoi, FloatKernelsGiveTheDoubleImpacts) {
+  const auto k1 = dm::chung_ooi_test1_glass();
+  const auto d1 = dm::run_impact<double>(dm::two_spheres(k1, 400));
+  const auto f1 = dm::run_impact<float>(dm::two_spheres(k1, 400));
+  EXPECT_NEAR(f1.max_force / d1.max_force, 1.0, 2e-5);
+  EXPECT_NEAR(f1.contact_time / d1.contact_time, 1.0, 2e-5);
+  EXPECT_NEAR(f1.normal_restitution, 1.0, 1e-3);
+  EXPECT_NE(f1.max_force, d1.max_force);  // the float kernels did run (the apps once ran double for float)
+  const auto k4 = dm::chung_ooi_alumina();
+  for (double angle : {20.0, 45.0}) {
+    auto c = dm::sphere_on_wall(k4, 400, angle);
+    c.friction = 0.092;
+    c.restitution = 0.98;
+    c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
+    const double d = dm::rebound_angle_deg(dm::run_impact<double>(c), k4.radius);
+    const double f = dm::rebound_angle_deg(dm::run_impact<float>(c), k4.radius);
+    EXPECT_NEAR(f, d, 2e-3) << "incidence " << angle;
+    std::printf("float against double: incidence %.0f deg, rebound %.6f against %.6f deg\n", angle, f, d);
+  }
+}
 TEST(DemHardCases, FiftyMetresPerSecondDoNotTunnelThroughAThinSurface) {
   auto k = dm::chung_ooi_test1_glass();
   k.radius = 0.005;

@@ -1,5 +1,5 @@
-"""Shared by the ISPH sweeps (bench/sweep_isph_*.py): run the isph app on a scene with some of its values
-replaced, one thread, no snapshots, and keep the sweep's rows in a CSV."""
+"""Shared by the accuracy-cost sweeps (bench/sweep_isph_*.py, bench/sweep_dem_impacts.py): run an app on a
+scene with some of its values replaced, one thread, no snapshots, and keep the sweep's rows in a CSV."""
 import csv
 import json
 import os
@@ -13,12 +13,22 @@ def scene_value(text, key):
     return float(re.search(rf"(?m)^{key} = ([0-9.eE+-]+)", text).group(1))
 
 
+def replace_values(text, values):
+    """TEXT with each scene line `key = ...` of VALUES (a dict) given the new value; a key the scene does not
+    have is refused (a sweep that changes nothing would measure nothing)."""
+    for key, value in values.items():
+        text, n = re.subn(rf"(?m)^{key} = .*$", f"{key} = {value!r}", text)
+        if n == 0:
+            raise KeyError(f"the scene has no line '{key} = ...' to replace")
+    return text
+
+
 def run_scene(app, text, work, values, precision="double"):
     """Write WORK/scene.toml (TEXT with each `key = ...` line of VALUES replaced and snapshots off), run APP
     on it with one thread in PRECISION, and return (summary.json as a dict, the run's CPU seconds)."""
     os.makedirs(work, exist_ok=True)
-    for key, value in dict(values, snapshot_every=0.0).items():
-        text = re.sub(rf"(?m)^{key} = .*$", f"{key} = {value!r}", text)
+    text = replace_values(text, values)
+    text = re.sub(r"(?m)^snapshot_every = .*$", "snapshot_every = 0.0", text)
     scene = os.path.join(work, "scene.toml")
     with open(scene, "w") as f:
         f.write(text)
