@@ -1,11 +1,14 @@
 #!/usr/bin/python3
 """Plots of the Chung & Ooi (2011) DEM benchmark from dem_benchmark's summary.json: the test-4 rebound
-angle of the contact point against the incidence angle (with the gross-sliding closed form), and the
+angles of the contact point and of the centre against the incidence angle (with the gross-sliding closed
+forms and the experiment), and the
 test-3 restitution measured against the input.
 
   /usr/bin/python3 tools/plot_dem_benchmark.py docs/figures/dem/summary.json [out_dir]
 
-Writes test4_rebound.png and test3_restitution.png next to the summary (or into out_dir).
+Writes test4_rebound.png, test4_centre_rebound.png (the centre of mass's rebound angle with Kharaz et
+al.'s measured points, tests/dem/data/kharaz2001_centre_rebound.csv) and test3_restitution.png next to
+the summary (or into out_dir).
 """
 import json
 import math
@@ -40,6 +43,30 @@ def main():
         ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(os.path.join(out, "test4_rebound.png"), dpi=120)
+    if "test4_centre_rebound_angles" in s:
+        inc = [r[0] for r in s["test4_centre_rebound_angles"]]
+        reb = [r[1] for r in s["test4_centre_rebound_angles"]]
+        mu, e = 0.092, 0.98
+        limit = math.degrees(math.atan(3.5 * mu * (1 + e)))
+        fine = [limit + k * (89 - limit) / 100 for k in range(101)]
+        closed = [math.degrees(math.atan((math.tan(math.radians(a)) - mu * (1 + e)) / e)) for a in fine]
+        fig, ax = plt.subplots(figsize=(5.5, 4.2))
+        ax.plot(inc, reb, "o-", label="polymech (Hertz-Mindlin, 400 steps per contact)")
+        ax.plot(fine, closed, "k--", lw=1, label="gross sliding: tan r = (tan i - mu (1+e)) / e")
+        data = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "dem", "data",
+                            "kharaz2001_centre_rebound.csv")
+        if os.path.exists(data):
+            with open(data) as f:
+                rows = [line.split(",") for line in f.read().split()[1:]]
+            ax.plot([float(r[0]) for r in rows], [float(r[1]) for r in rows], "s", mfc="none", color="C3",
+                    label="experiment (Kharaz et al. 2001)")
+        ax.plot([0, 89], [0, 89], color="0.7", lw=0.5, label="rebound = incidence")
+        ax.set_xlabel("incidence angle (deg)")
+        ax.set_ylabel("rebound angle of the centre of mass (deg)")
+        ax.set_title("Chung & Ooi test 4 against the experiment")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "test4_centre_rebound.png"), dpi=120)
     if "test3_restitution" in s:
         e_in = [r[0] for r in s["test3_restitution"]]
         e_out = [r[1] for r in s["test3_restitution"]]

@@ -3,7 +3,8 @@
 //   dem_benchmark [--scene scenes/dem/chung_ooi_test1.toml] [--all] [--out out/dem_benchmark]
 // Writes summary.json: test1_max_force, test1_contact_time, test1_max_overlap (and the Hertz values and
 // relative errors), the same for test2 (and test2_mesh_* for the meshed wall), test3_restitution
-// [[input, measured], ...], test4_rebound_angles [[incidence_deg, rebound_deg], ...]; and test4.csv.
+// [[input, measured], ...], test4_rebound_angles [[incidence_deg, rebound_deg], ...] (the contact point's),
+// test4_centre_rebound_angles (the centre of mass's); and test4.csv (both angles, velocity and spin after).
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -46,7 +47,7 @@ dm::ImpactMeasure impact(const pm::io::DemScene& s, double angle_deg, double res
   return s.header.precision == "float" ? dm::run_impact<float>(c) : dm::run_impact<double>(c);
 }
 
-void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
+void run_scene(const pm::io::DemScene& s, const std::filesystem::path& out_dir, nlohmann::json& j, bool quiet) {
   const std::string prefix = "test" + std::to_string(s.test) + (s.target == "mesh" ? "_mesh_" : "_");
   if (s.test == 1 || s.test == 2) {
     const auto got = impact(s, 0.0, s.restitutions[0]);
@@ -81,20 +82,31 @@ void run_scene(const pm::io::DemScene& s, nlohmann::json& j, bool quiet) {
     }
     j["test3_restitution"] = rows;
   } else if (s.test == 4) {
-    nlohmann::json rows = nlohmann::json::array();
-    std::vector<double> in, out, vt, w;
+    nlohmann::json rows = nlohmann::json::array(), centre_rows = nlohmann::json::array();
+    std::vector<std::vector<double>> columns(6);
     for (double angle : s.angles) {
       const auto got = impact(s, angle, s.restitutions[0]);
       total_steps += got.steps;
       const double rebound = dm::rebound_angle_deg(got, s.impact.radius);
+      const double centre = dm::centre_rebound_angle_deg(got);
       rows.push_back({angle, rebound});
-      in.push_back(angle);
-      out.push_back(rebound);
-      vt.push_back(got.v_after[0]);
-      w.push_back(got.omega_after[1]);
-      if (!quiet) std::printf("test 4: incidence %4.1f deg -> rebound %7.3f deg\n", angle, rebound);
+      centre_rows.push_back({angle, centre});
+      columns[0].push_back(angle);
+      columns[1].push_back(rebound);
+      columns[2].push_back(centre);
+      columns[3].push_back(got.v_after[0]);
+      columns[4].push_back(got.v_after[2]);
+      columns[5].push_back(got.omega_after[1]);
+      if (!quiet)
+        std::printf("test 4: incidence %4.1f deg -> rebound %7.3f deg (contact point), %7.3f deg (centre)\n", angle,
+                    rebound, centre);
     }
     j["test4_rebound_angles"] = rows;
+    j["test4_centre_rebound_angles"] = centre_rows;
+    pm::io::write_csv(out_dir / "test4.csv",
+                      {"incidence_deg", "rebound_contact_point_deg", "rebound_centre_deg", "vx_after", "vz_after",
+                       "spin_y_after"},
+                      columns);
   }
 }
 
@@ -128,7 +140,7 @@ int main(int argc, char** argv) {
     const auto t0 = std::chrono::steady_clock::now();
     for (const auto& s : scenes) {
       j["scenes"].push_back(s.header.file.string());
-      run_scene(s, j, opt.quiet);
+      run_scene(s, opt.out, j, opt.quiet);
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     j["wall_seconds"] = wall;

@@ -79,4 +79,10 @@ inline double rebound_angle_deg(const ImpactMeasure& m, double radius) {
   return std::atan2(vcx, m.v_after[2]) * 180.0 / kPi;
 }
 
+// Rebound angle (degrees) of the centre of mass from the normal: atan of its tangential (x) over its
+// normal (z) velocity after the impact (what Kharaz et al. 2001 measured, their Fig. of the rebound angle).
+inline double centre_rebound_angle_deg(const ImpactMeasure& m) {
+  return std::atan2(m.v_after[0], m.v_after[2]) * 180.0 / kPi;
+}
+
 }  // namespace polymech::dem

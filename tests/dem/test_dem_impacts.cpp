@@ -4,8 +4,11 @@
 // and the tangential spring kept across neighbour-list rebuilds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -137,6 +140,47 @@ TEST(ChungOoi, Test4ReboundAnglesFollowTheSlidingLimitAndTurnNegativeInStickSlip
   }
 }
 
+
+// Test 4 against the experiment it stands for: Kharaz, Gorham & Salman (2001), 5 mm alumina spheres at
+// 3.9 m/s on a glass anvil, the rebound angle of the centre of mass against the incidence angle (their
+// measured points as digitised in MFiX's DEM05 test data, tests/dem/data/kharaz2001_centre_rebound.csv).
+// Measured here at 400 steps per contact, the code lies above the experiment at every point, by 0.40-1.05
+// degrees from 9.9 degrees of incidence on (1.05 at 20.6) and by 0.12, 0.55, 1.52 degrees at 0.24, 2.3,
+// 4.3. In gross sliding it is the rigid-body result tan(r) = (tan(i) - mu (1 + e)) / e with the scene's
+// mu = 0.092 and e = 0.98; the experiment's spheres rebound a little steeper (a larger effective friction
+// or a lower e there). Near normal incidence the contact sticks throughout and the Mindlin spring gives
+// back the tangential velocity it took (centre rebound = incidence x 1.04 at 4.3 degrees), where the
+// experiment lost a third of it (x 0.69, Maw's micro-slip): a limit of the no-slip spring, not of the step.
+TEST(ChungOoi, Test4CentreReboundFollowsKharazsExperiment) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr) << "ctest sets POLYMECH_SOURCE_DIR";
+  const std::string path = std::string(src) + "/tests/dem/data/kharaz2001_centre_rebound.csv";
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  std::string line;
+  std::getline(in, line);  // header
+  const auto k = dm::chung_ooi_alumina();
+  int points = 0;
+  double worst = 0.0;
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    ASSERT_NE(comma, std::string::npos) << line;
+    const double incidence = std::stod(line.substr(0, comma)), measured = std::stod(line.substr(comma + 1));
+    auto c = dm::sphere_on_wall(k, 400, incidence);
+    c.friction = 0.092;
+    c.restitution = 0.98;
+    c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
+    const double got = dm::centre_rebound_angle_deg(dm::run_impact(c));
+    EXPECT_NEAR(got, measured, incidence < 5.0 ? 1.6 : 1.2) << "incidence " << incidence;
+    EXPECT_GT(got, measured - 0.05) << "incidence " << incidence;  // the side measured: never below
+    worst = std::max(worst, std::abs(got - measured));
+    std::printf("Kharaz 2001: incidence %7.3f deg, centre rebound %7.3f deg (measured %7.3f)\n", incidence, got,
+                measured);
+    ++points;
+  }
+  EXPECT_EQ(points, 9);
+  std::printf("largest difference %.3f deg\n", worst);
+}
 
 // The kernels in float (dem_benchmark --precision float) give the double run's impacts to the float
 // round-off: measured at 400 steps per contact, test 1's peak force -1.4e-6 (double +2.2e-6) from Hertz,
