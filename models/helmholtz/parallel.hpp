@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/host_mirror.hpp"
 #include "core/types.hpp"
 
 namespace polymech::helmholtz {
@@ -125,10 +126,8 @@ class Halo {
   std::vector<std::size_t> send_offsets_, recv_offsets_;
   View1<Index> send_index_, recv_index_;
   View1<V> send_buffer_, recv_buffer_;
-  // host copies of the buffers for MPI (the same memory on a host backend); spelled through
-  // create_mirror_view, whose type is HostMirror in Kokkos 3.x-4.x and host_mirror_type later
-  using HostBuffer = decltype(Kokkos::create_mirror_view(std::declval<View1<V>>()));
-  HostBuffer send_host_, recv_host_;
+  // host copies of the buffers for MPI (the same memory on a host backend)
+  kx::HostMirror<View1<V>> send_host_, recv_host_;
   mutable double seconds_ = 0.0;
   mutable long long updates_ = 0;
 };

@@ -17,6 +17,7 @@
 // compile under nvcc.
 #pragma once
 
+#include "core/host_mirror.hpp"
 #include "core/kokkos_shim.hpp"
 #include "solvers/host_sparse_lu.hpp"
 
@@ -212,8 +213,7 @@ class TwoLevelPpe {
   Index coarse_size_ = 0;
   Kokkos::View<Index*, MemSpace> agg_, start_, members_;
   View1<double> rc_;
-  // spelled through create_mirror_view (HostMirror in Kokkos 3.x-4.x, host_mirror_type later)
-  decltype(Kokkos::create_mirror_view(std::declval<View1<double>>())) rc_host_;
+  kx::HostMirror<View1<double>> rc_host_;
   View1<T> az_;
   solvers::HostSparseLU lu_;
 };
