@@ -1,11 +1,21 @@
-// DEM step throughput (seed 002 paper 2; issue 13): sphere-steps per second of the whole Dem step
-// (broad phase with skin, sphere-sphere and sphere-plane Hertz-Mindlin with friction and damping, the
-// integrator) on a dense block in contact, for spheres and for the cubical clumps of 8 spheres, at
-// 1e3 .. 6.4e4 particles. The block is a cubic lattice of spacing 0.99 x 2R in a box of planes that
-// holds it exactly, so every particle keeps its neighbours in contact while the block rings down. CPU
-// time (the machine is shared): run with OMP_NUM_THREADS=1.
+// DEM step throughput (seed 002 paper 2; issue 13): sphere-steps and contacts per second of the whole Dem
+// step (broad phase with skin, sphere-sphere and sphere-plane Hertz-Mindlin with friction and damping, the
+// integrator) on a dense block in contact, for spheres (1e3 .. 1e6) and for the cubical clumps of 8
+// spheres (8e3 .. 8.3e5 spheres). The block is a cubic lattice of spacing 0.99 x 2R in a box of planes
+// that holds it exactly, so every particle keeps its neighbours in contact while the block rings down.
+// Counters: `contacts` (sphere blocks: lattice neighbours and planes in contact after the timed steps,
+// counted on the host), `contacts_per_s`, and where the step's time goes, from the kernels' times
+// (bench/support/kernel_times.hpp) over 10 further steps: `share_broad_phase` (the neighbour search's
+// kernels and the carried springs, the planes' Verlet mask), `share_contact_forces`, `share_integrator`;
+// `build_us_per_sphere`: one list build (the first step's broad-phase kernels) per sphere. CPU time (the
+// machine is shared): run with OMP_NUM_THREADS=1.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "support/kernel_times.hpp"
 #include "dem/dem.hpp"
 #include "dem/pour.hpp"
 
@@ -47,18 +57,71 @@ dm::Config dense_block(int n, bool clumps) {
   return c;
 }
 
+// Kernel names by what they do in a step.
+const std::vector<std::string> kBroadPhase = {"polymech::neighbors::", "polymech::contact::carry_history",
+                                              "polymech::dem::near_planes"};
+const std::vector<std::string> kContactForces = {"polymech::dem::sphere_sphere", "polymech::dem::sphere_plane"};
+const std::vector<std::string> kIntegrator = {"polymech::dem::kick", "polymech::dem::start_forces",
+                                              "polymech::dem::clump_"};
+
+// Contacts of a block of free spheres (lattice order i + n (j + n k)): face neighbours that overlap, and
+// spheres that overlap one of the box's planes (the floor z = 0, the walls x, y = 0 and = side).
+double block_contacts(const dm::Dem<double>& m, int n, double side) {
+  const auto& s = m.spheres();
+  auto x = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.x);
+  auto r = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.radius);
+  auto id = [n](int i, int j, int k) { return i + n * (j + n * k); };
+  double contacts = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = id(i, j, k);
+        const int next[3] = {i + 1 < n ? id(i + 1, j, k) : -1, j + 1 < n ? id(i, j + 1, k) : -1,
+                             k + 1 < n ? id(i, j, k + 1) : -1};
+        for (const int b : next) {
+          if (b < 0) continue;
+          const double dx = x(a, 0) - x(b, 0), dy = x(a, 1) - x(b, 1), dz = x(a, 2) - x(b, 2);
+          if (std::sqrt(dx * dx + dy * dy + dz * dz) < r(a) + r(b)) ++contacts;
+        }
+        const double gaps[5] = {x(a, 2), x(a, 0), side - x(a, 0), x(a, 1), side - x(a, 1)};
+        for (const double g : gaps)
+          if (g < r(a)) ++contacts;
+      }
+  return contacts;
+}
+
 void dem_step(benchmark::State& state, bool clumps) {
   const int n = static_cast<int>(state.range(0));
-  dm::Dem<double> m(dense_block(n, clumps));
-  for (int s = 0; s < 20; ++s) m.step();  // the first list and the first contacts
+  const auto config = dense_block(n, clumps);
+  dm::Dem<double> m(config);
+  double build_seconds = 0.0;
+  {
+    pm::bench::KernelTimes first;  // the first step holds the first list build
+    m.step();
+    build_seconds = first.seconds(kBroadPhase);
+  }
+  for (int s = 0; s < 19; ++s) m.step();  // the first contacts
   for (auto _ : state) m.step();
   Kokkos::fence();
+  pm::bench::KernelTimes times;
+  for (int s = 0; s < 10; ++s) m.step();
+  Kokkos::fence();
+  const double all = times.total();
   const double spheres = double(m.sphere_count());
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * spheres));
   state.counters["particles"] = double(n) * n * n;
   state.counters["spheres"] = spheres;
   state.counters["sphere_steps_per_s"] = benchmark::Counter(spheres, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["list_builds"] = m.sphere_list_builds();
+  state.counters["share_broad_phase"] = times.seconds(kBroadPhase) / all;
+  state.counters["share_contact_forces"] = times.seconds(kContactForces) / all;
+  state.counters["share_integrator"] = times.seconds(kIntegrator) / all;
+  state.counters["build_us_per_sphere"] = 1e6 * build_seconds / spheres;
+  if (!clumps) {
+    const double contacts = block_contacts(m, n, config.planes[2].point[0]);
+    state.counters["contacts"] = contacts;
+    state.counters["contacts_per_s"] = benchmark::Counter(contacts, benchmark::Counter::kIsIterationInvariantRate);
+  }
 }
 
 void BM_DemStepSpheres(benchmark::State& state) { dem_step(state, false); }
@@ -66,5 +129,5 @@ void BM_DemStepCubeClumps(benchmark::State& state) { dem_step(state, true); }
 
 }  // namespace
 
-BENCHMARK(BM_DemStepSpheres)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_DemStepCubeClumps)->Arg(10)->Arg(20)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DemStepSpheres)->Arg(10)->Arg(22)->Arg(40)->Arg(47)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DemStepCubeClumps)->Arg(10)->Arg(20)->Arg(47)->Unit(benchmark::kMicrosecond);
