@@ -56,7 +56,11 @@ def plot(rows, path):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     ax = axes[0]
     ax.semilogx([r["cpu_seconds"] for r in rows], [r["sinkage_mm"] for r in rows], "o", label="rigid wheel, this code")
-    for r in rows:
+    labelled = set()
+    for r in rows:  # one label per grain size (the seeds' points sit together)
+        if r["scale"] in labelled:
+            continue
+        labelled.add(r["scale"])
         ax.annotate(f"R {1e3 * r['radius_min']:.1f}-{1e3 * r['radius_max']:.1f} mm\n{int(r['spheres'])} spheres",
                     (r["cpu_seconds"], r["sinkage_mm"]), fontsize=7, textcoords="offset points", xytext=(5, -10))
     ax.axhline(PAPER_SINKAGE_MM, color="grey", ls="--", label="paper (FE tyre, R 5-7 mm): 53.6 mm")
