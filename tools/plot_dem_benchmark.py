@@ -57,6 +57,7 @@ def main():
     out = sys.argv[2] if len(sys.argv) > 2 else os.path.dirname(path)
     with open(path) as f:
         s = json.load(f)
+    os.makedirs(out, exist_ok=True)
     if "test4_rebound_angles" in s:
         plot_test4(s["test4_rebound_angles"], 3.5 * MU * (1 + E), "3.5 mu (1+e)", "the contact point",
                    "Chung & Ooi test 4: alumina sphere, 3.9 m/s", os.path.join(out, "test4_rebound.png"))
