@@ -3,9 +3,11 @@
 uninterrupted run (issue 16: checkpoint/restart through the shared run driver).
 
     /usr/bin/python3 tests/restart/kill_restart.py BUILD_BIN/APP WORK_DIR [--kills 3]
-        [--checkpoint-steps N] -- APP_ARGS...
+        [--checkpoint-steps N] [--reference DIR] -- APP_ARGS...
 
-1. the reference: APP APP_ARGS --out WORK_DIR/reference
+1. the reference: APP APP_ARGS --out WORK_DIR/reference, or with --reference DIR the output folder of an
+   uninterrupted run made before (`APP APP_ARGS --out DIR --quiet` with the same binary and thread count): a
+   run of hours then splits into two halves that can run at different times;
 2. the interrupted run: APP APP_ARGS --out WORK_DIR/interrupted --checkpoint-steps N, killed with SIGKILL
    `--kills` times, each time at a different moment after a new checkpoint appeared (at once, a little
    later, later still: inside a step, inside a snapshot or a checkpoint write), and restarted with
@@ -45,6 +47,7 @@ def main():
     ap.add_argument("--kills", type=int, default=3)
     ap.add_argument("--checkpoint-steps", type=int, default=50)
     ap.add_argument("--timeout", type=float, default=300.0)
+    ap.add_argument("--reference", help="an uninterrupted run's output folder to compare with (not run here)")
     argv = sys.argv[1:]
     split = argv.index("--") if "--" in argv else len(argv)
     a = ap.parse_args(argv[:split])
@@ -54,12 +57,19 @@ def main():
     ref, run = os.path.join(a.work, "reference"), os.path.join(a.work, "interrupted")
     env = dict(os.environ)
 
-    t0 = time.time()
-    r = subprocess.run([a.app] + args + ["--out", ref, "--quiet"], env=env, capture_output=True, text=True)
-    if r.returncode != 0:
-        print(f"reference run failed ({r.returncode}):\n{r.stderr}")
-        return 1
-    print(f"reference run: {time.time() - t0:.1f} s")
+    if a.reference:
+        ref = a.reference
+        if not os.path.isfile(os.path.join(ref, "summary.json")):
+            print(f"--reference {ref}: no summary.json there (not a finished run's output folder)")
+            return 2
+        print(f"reference: {ref} (run before)")
+    else:
+        t0 = time.time()
+        r = subprocess.run([a.app] + args + ["--out", ref, "--quiet"], env=env, capture_output=True, text=True)
+        if r.returncode != 0:
+            print(f"reference run failed ({r.returncode}):\n{r.stderr}")
+            return 1
+        print(f"reference run: {time.time() - t0:.1f} s")
 
     delays = [0.0, 0.15, 0.4, 0.05, 0.25]
     cmd = [a.app] + args + ["--out", run, "--quiet", "--checkpoint-steps", str(a.checkpoint_steps)]
