@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/kokkos_shim.hpp"
+#include "core/launch_callbacks.hpp"
 
 namespace polymech::bench {
 
@@ -18,23 +18,9 @@ class KernelTimes {
  public:
   KernelTimes() {
     state() = {};
-    namespace kt = Kokkos::Tools::Experimental;
-    kt::set_begin_parallel_for_callback(&on_begin);
-    kt::set_begin_parallel_reduce_callback(&on_begin);
-    kt::set_begin_parallel_scan_callback(&on_begin);
-    kt::set_end_parallel_for_callback(&on_end);
-    kt::set_end_parallel_reduce_callback(&on_end);
-    kt::set_end_parallel_scan_callback(&on_end);
+    kx::set_launch_callbacks(&on_begin, &on_end);
   }
-  ~KernelTimes() {
-    namespace kt = Kokkos::Tools::Experimental;
-    kt::set_begin_parallel_for_callback(nullptr);
-    kt::set_begin_parallel_reduce_callback(nullptr);
-    kt::set_begin_parallel_scan_callback(nullptr);
-    kt::set_end_parallel_for_callback(nullptr);
-    kt::set_end_parallel_reduce_callback(nullptr);
-    kt::set_end_parallel_scan_callback(nullptr);
-  }
+  ~KernelTimes() { kx::set_launch_callbacks(nullptr); }
   KernelTimes(const KernelTimes&) = delete;
   KernelTimes& operator=(const KernelTimes&) = delete;
 

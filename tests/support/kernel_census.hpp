@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/kokkos_shim.hpp"
+#include "core/launch_callbacks.hpp"
 
 namespace polymech::testing {
 
@@ -17,18 +17,12 @@ class KernelCensus {
   // Installs the callbacks; one census at a time.
   KernelCensus() {
     state() = {};
-    namespace kt = Kokkos::Tools::Experimental;
-    kt::set_begin_parallel_for_callback(&on_begin);
-    kt::set_begin_parallel_reduce_callback(&on_begin);
-    kt::set_begin_parallel_scan_callback(&on_begin);
-    kt::set_allocate_data_callback(&on_allocate);
+    kx::set_launch_callbacks(&on_begin);
+    Kokkos::Tools::Experimental::set_allocate_data_callback(&on_allocate);
   }
   ~KernelCensus() {
-    namespace kt = Kokkos::Tools::Experimental;
-    kt::set_begin_parallel_for_callback(nullptr);
-    kt::set_begin_parallel_reduce_callback(nullptr);
-    kt::set_begin_parallel_scan_callback(nullptr);
-    kt::set_allocate_data_callback(nullptr);
+    kx::set_launch_callbacks(nullptr);
+    Kokkos::Tools::Experimental::set_allocate_data_callback(nullptr);
   }
   KernelCensus(const KernelCensus&) = delete;
   KernelCensus& operator=(const KernelCensus&) = delete;
