@@ -1,10 +1,13 @@
 // MPS elastic force kernels (seed 000 eqs. (4), (5), (11), (12)): pair interactions per second for the
 // volumetric-strain pass plus the acceleration pass, with and without the rotation effect, in double
 // and float, and the whole time step in particles per second. Plate of the paper's material at
-// l0 = 50 um; N from 1e4 to 2e6 (the paper's size).
+// l0 = 50 um; N from 1e4 to 2e6 (the paper's size). MpsWaveFront: the force kernels with the plate
+// ahead of the wave still quiet, its subnormal numbers flushed or kept (issue 39).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "mps_elastic/mps_elastic.hpp"
 
@@ -54,6 +57,35 @@ void BM_MpsStep(benchmark::State& state) {
   state.counters["particles"] = m.particles();
 }
 
+// The force kernels while a wave front enters a quiet plate: after 300 steps of the point source the
+// front has crossed a few millimetres, and ahead of it the displacements and velocities decay through
+// the subnormal range (the discrete stencil carries a tail one neighbour radius per step) down to zero.
+// range(1): 0 runs the whole case with subnormals flushed to zero (the default), 1 keeps them, which on
+// Intel cores sends every operation on them through microcode (issue 39: 3.6x slower on a Xeon).
+// Counter subnormal_share: the share of displacement and velocity components in the subnormal range.
+template <class T>
+void BM_MpsWaveFront(benchmark::State& state) {
+  const pm::kx::Subnormals before = pm::kx::thread_subnormals();
+  pm::kx::set_host_subnormals(state.range(1) == 1 ? pm::kx::Subnormals::keep : pm::kx::Subnormals::flush);
+  {
+    me::MpsElastic<T> m(plate(state.range(0), true));
+    for (int s = 0; s < 300; ++s) m.step();
+    for (auto _ : state) {
+      pm::mps::volumetric_strain<T, true>(m.family(), m.fields(), m.params(), pm::neighbors::SerialNeighbors{});
+      pm::mps::elastic_acceleration<T, true>(m.family(), m.fields(), m.params(), pm::neighbors::SerialNeighbors{});
+      Kokkos::fence();
+    }
+    const auto h = m.host_fields();
+    std::int64_t sub = 0;
+    for (const std::vector<double>* f : {&h.u, &h.v})
+      for (double x : *f) sub += (x != 0.0 && std::abs(x) < static_cast<double>(std::numeric_limits<T>::min())) ? 1 : 0;
+    state.SetItemsProcessed(state.iterations() * m.bonds());
+    state.counters["particles"] = m.particles();
+    state.counters["subnormal_share"] = static_cast<double>(sub) / static_cast<double>(h.u.size() + h.v.size());
+  }
+  pm::kx::set_host_subnormals(before);
+}
+
 }  // namespace
 
 #define POLYMECH_MPS_BENCH(fn, T, R, name)                                                         \
@@ -70,3 +102,16 @@ BENCHMARK(BM_MpsForce<double, true, pm::neighbors::TeamNeighbors>)
     ->Unit(benchmark::kMillisecond);
 POLYMECH_MPS_BENCH(BM_MpsStep, double, true, "MpsStep/double/rotation");
 POLYMECH_MPS_BENCH(BM_MpsStep, float, true, "MpsStep/float/rotation");
+// 0 = subnormals flushed (default), 1 = kept
+BENCHMARK(BM_MpsWaveFront<double>)
+    ->Name("MpsWaveFront/double")
+    ->ArgNames({"particles", "keep_subnormals"})
+    ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MpsWaveFront<float>)
+    ->Name("MpsWaveFront/float")
+    ->ArgNames({"particles", "keep_subnormals"})
+    ->ArgsProduct({{100000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);

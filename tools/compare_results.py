@@ -5,7 +5,8 @@
 
 Every summary.json number (except timings), every CSV column and every HDF5 dataset is compared; the
 largest relative difference per file is printed, and the exit code is 1 if any exceeds --rtol (0: the
-results must be bitwise equal). Keys that exist on one side only are listed. Used to show that a
+results must be bitwise equal). Keys that exist on one side only are listed. --per-column: CSV values
+relative to their column's largest magnitude (as HDF5 datasets always are). Used to show that a
 refactor leaves results unchanged (docs/PERFORMANCE.md, docs/DEVELOPING.md).
 """
 import argparse
@@ -18,6 +19,8 @@ import sys
 # summary keys that measure the machine, not the physics
 TIMING_KEYS = {"wall_seconds", "shape_function_evaluations_per_second", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
                "scene",
+               # how the run treated subnormal numbers (flush or keep): a setting of the run, like the threads
+               "subnormals",
                # the ISPH app's timings
                "particle_steps_per_second", "ppe_share_of_step",
                # the EFG app's timings
@@ -34,8 +37,8 @@ def rel(a, b):
 def compare_json(a, b, path, out):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
-            if k in TIMING_KEYS:
-                continue
+            if k in TIMING_KEYS or k.endswith(("_seconds", "_per_second")) or k.startswith("subnormal_census"):
+                continue  # timings, and the subnormal census (a diagnostic of the run, issue 39)
             if k not in a or k not in b:
                 out["only"].append(f"{path}.{k}")
                 continue
@@ -60,15 +63,22 @@ def read_csv(path):
     return rows[0], [[float(x) for x in r] for r in rows[1:]]
 
 
-def compare_csv(pa, pb, out):
+def compare_csv(pa, pb, out, per_column=False):
+    """Each value against its counterpart; with PER_COLUMN, the difference relative to the column's largest
+    magnitude (as HDF5 datasets are compared), so a probe's 1e-316 against 0 ahead of a wave front counts
+    as what it is against the wave's amplitude."""
     ha, ra = read_csv(pa)
     hb, rb = read_csv(pb)
     if ha != hb or len(ra) != len(rb):
         out["only"].append(f"header or row count ({len(ra)} vs {len(rb)} rows)")
         return
+    scale = [max([abs(r[j]) for r in ra + rb if math.isfinite(r[j])] + [0.0]) for j in range(len(ha))]
     for i, (x, y) in enumerate(zip(ra, rb)):
         for j, (p, q) in enumerate(zip(x, y)):
-            d = rel(p, q)
+            if per_column and p != q and math.isfinite(p) and math.isfinite(q):
+                d = abs(p - q) / scale[j] if scale[j] > 0 else 0.0
+            else:
+                d = rel(p, q)
             if d > out["max"]:
                 out["max"], out["where"] = d, f"row {i}, column {ha[j]}"
 
@@ -98,6 +108,8 @@ def main():
     ap.add_argument("old")
     ap.add_argument("new")
     ap.add_argument("--rtol", type=float, default=0.0)
+    ap.add_argument("--per-column", action="store_true",
+                    help="CSV differences relative to the column's largest magnitude, not to each value")
     args = ap.parse_args()
     worst = 0.0
     failed = False
@@ -114,7 +126,7 @@ def main():
             with open(pa) as fa, open(pb) as fb:
                 compare_json(json.load(fa), json.load(fb), "", out)
         elif name.endswith(".csv"):
-            compare_csv(pa, pb, out)
+            compare_csv(pa, pb, out, args.per_column)
         elif name.endswith(".h5"):
             compare_h5(pa, pb, out)
         else:

@@ -26,9 +26,10 @@ struct CommonOptions {
   int threads = -1;
   bool quiet = false;
   bool dry_run = false;
+  std::string subnormals;  // "flush" | "keep"; "" = POLYMECH_SUBNORMALS, else flush (core/float_env.hpp)
 };
 
-// --scene, --out, --accuracy, --precision, --steps, --threads, --quiet, --dry-run.
+// --scene, --out, --accuracy, --precision, --steps, --threads, --quiet, --dry-run, --subnormals.
 inline void add_common_options(CLI::App& app, CommonOptions& o, const std::string& default_scene,
                                const std::string& default_out) {
   o.scene = default_scene;
@@ -45,6 +46,10 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
       ->check(CLI::PositiveNumber);
   app.add_flag("--quiet", o.quiet, "no progress lines");
   app.add_flag("--dry-run", o.dry_run, "check the scene, print the run's size, memory and predicted time, and stop");
+  app.add_option("--subnormals", o.subnormals,
+                 "subnormal numbers in the host threads: flushed to zero (default; POLYMECH_SUBNORMALS sets it too) "
+                 "or kept; results do not depend on it, speed does (docs/METHODS.md)")
+      ->check(CLI::IsMember({"flush", "keep"}));
 }
 
 // Prints the cost estimate of the loaded scene before a run (stderr, unless --quiet), or for --dry-run
@@ -70,13 +75,18 @@ inline nlohmann::json summary_header(const std::string& name, const io::SceneHea
   j["accuracy"] = scene.accuracy;
   j["precision"] = scene.precision;
   j["effects"] = std::vector<std::string>(scene.effects.names().begin(), scene.effects.names().end());
+  j["subnormals"] = kx::to_string(kx::thread_subnormals());  // as this thread runs (every host thread alike)
   return j;
 }
 
-// Kokkos for the lifetime of an app.
+// Kokkos for the lifetime of an app, with its threads and subnormal mode (--threads, --subnormals).
 class KokkosSession {
  public:
   explicit KokkosSession(int threads) { kx::initialize(threads); }
+  explicit KokkosSession(const CommonOptions& o) {
+    kx::initialize(o.threads, o.subnormals.empty() ? kx::subnormals_from_environment()
+                                                   : kx::parse_subnormals(o.subnormals, "--subnormals"));
+  }
   ~KokkosSession() { Kokkos::finalize(); }
   KokkosSession(const KokkosSession&) = delete;
   KokkosSession& operator=(const KokkosSession&) = delete;

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -55,11 +56,24 @@ inline std::string file_digest(const std::filesystem::path& p) {
 }  // namespace detail
 
 // What a checkpoint must match to be resumed: the app, the scene file's bytes, the accuracy and
-// precision, the step count and any app option that changes the run (`extra`). Not the thread
-// count: results do not depend on it.
+// precision, the step count, the subnormal mode (flushed or kept: results agree to round-off, not
+// bitwise) and any app option that changes the run (`extra`). Not the thread count: results do not
+// depend on it.
 inline std::string run_key(const std::string& app, const io::SceneHeader& h, std::int64_t steps, const std::string& extra = "") {
   return "app=" + app + "; scene=" + h.file.string() + " (" + detail::file_digest(h.file) + "); accuracy=" + h.accuracy +
-         "; precision=" + h.precision + "; steps=" + std::to_string(steps) + (extra.empty() ? "" : "; " + extra);
+         "; precision=" + h.precision + "; steps=" + std::to_string(steps) + "; subnormals=" + kx::to_string(kx::thread_subnormals()) + (extra.empty() ? "" : "; " + extra);
+}
+
+// POLYMECH_SUBNORMAL_CENSUS: steps between censuses of the state's subnormal values (unset: none).
+inline std::int64_t census_steps_from_environment() {
+  const char* v = std::getenv("POLYMECH_SUBNORMAL_CENSUS");
+  if (v == nullptr || *v == '\0') return 0;
+  char* end = nullptr;
+  const long long n = std::strtoll(v, &end, 10);
+  if (*end != '\0' || n <= 0)
+    throw std::invalid_argument(std::string("POLYMECH_SUBNORMAL_CENSUS = '") + v +
+                                "': give the number of steps between censuses (a positive integer)");
+  return n;
 }
 
 class Checkpoints {
@@ -86,7 +100,10 @@ class Checkpoints {
   std::int64_t resume_step() const { return from_ ? from_->step : 0; }
 
   // Checkpoints during the run: `add` puts the app's own records (its snapshot writer) into each.
+  // Also the run's diagnostics from the environment: POLYMECH_SUBNORMAL_CENSUS=N counts the state's
+  // subnormal values every N steps (summary.json "subnormal_census"; docs/DEVELOPING.md).
   void attach(models::RunHooks& hooks, std::function<void(models::Archive&)> add, bool quiet) {
+    hooks.census_every = census_steps_from_environment();
     hooks.resume = resume();
     hooks.checkpoint.every_seconds = options_.checkpoint_every;
     hooks.checkpoint.every_steps = options_.checkpoint_steps;
@@ -123,6 +140,15 @@ class Checkpoints {
   std::optional<io::Checkpoint> from_;
 };
 
+// With POLYMECH_SUBNORMAL_CENSUS: the largest share of subnormal values each View of the state held, and
+// when, under `key`.
+inline void put_subnormal_census(nlohmann::json& j, const models::RunStats& s, const std::string& key = "subnormal_census") {
+  if (s.subnormals.empty()) return;
+  nlohmann::json c = nlohmann::json::object();
+  for (const auto& p : s.subnormals) c[p.name] = {{"largest_share", p.share}, {"at_step", p.step}};
+  j[key] = c;
+}
+
 // What summary.json says about how the run went: diverged (with the reason, the step, the first bad
 // particle or DoF and where it is, and the step of the last good state, the last snapshot), and how
 // often it was resumed from a checkpoint.
@@ -138,6 +164,7 @@ inline void put_run_record(nlohmann::json& j, const models::RunStats& s) {
     }
   }
   j["restarts"] = s.restarts;
+  put_subnormal_census(j, s);
 }
 
 }  // namespace polymech::apps

@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
   app.add_flag("--all", all, "run every chung_ooi_test*.toml in the scene's folder");
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("dem_benchmark", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     std::vector<std::filesystem::path> files = {opt.scene};
     if (all) {
       files.clear();

@@ -289,7 +289,7 @@ int main(int argc, char** argv) {
   std::string command;
   for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
   return pm::apps::guarded("dem_pour", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     const auto scene = pm::io::load_dem_pour_scene(opt.scene, opt.accuracy, opt.precision);
     if (pm::apps::announce_cost("dem_pour", scene.header, scene.cost, opt)) return 0;
     return run_case(scene, opt, ropt, lammps_data, command);

@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
     if (pm::apps::announce_cost("efg", scene.header, scene.cost, opt)) return 0;
     if (!scene.dynamic && !ropt.restart.empty())
       throw std::invalid_argument("--restart: " + opt.scene.string() + " is a static scene (one solve: nothing to resume)");
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     return scene.header.precision == "float" ? run_case<float>(scene, opt, ropt) : run_case<double>(scene, opt, ropt);
   });
 }

@@ -229,7 +229,7 @@ int main(int argc, char** argv) {
 #if POLYMECH_WITH_MPI
     hz::MpiSession mpi(argc, argv);
 #endif
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     pm::io::HelmholtzSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;

@@ -358,7 +358,7 @@ int main(int argc, char** argv) {
   return pm::apps::guarded("isph", [&] {
     const auto scene = pm::io::load_isph_scene(opt.scene, opt.precision, opt.accuracy);
     if (pm::apps::announce_cost("isph", scene.header, scene.cost, opt)) return 0;
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     const bool single = scene.header.precision == "float";
     if (scene.config.dim == 3) return single ? run_case<float, 3>(scene, opt, ropt) : run_case<double, 3>(scene, opt, ropt);
     return single ? run_case<float, 2>(scene, opt, ropt) : run_case<double, 2>(scene, opt, ropt);

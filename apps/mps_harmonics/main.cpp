@@ -162,6 +162,8 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
   j["wall_seconds_crack"] = b.stats.wall_seconds;
   j["wall_seconds"] = a.stats.wall_seconds + b.stats.wall_seconds;
   j["restarts"] = a.stats.restarts + b.stats.restarts;
+  pm::apps::put_subnormal_census(j, a.stats, "subnormal_census_intact");
+  pm::apps::put_subnormal_census(j, b.stats, "subnormal_census_crack");
   std::vector<std::string> files = {"summary.json", "time_history.csv", "spectrum.csv", "probes_crack.csv",
                                     "probes_intact.csv"};
   if (!b.contact.times.empty()) files.push_back("contact_states.csv");
@@ -193,7 +195,7 @@ int main(int argc, char** argv) {
   pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("mps_harmonics", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     pm::io::MpsSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;

@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
   pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("mps_point_source", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     pm::io::MpsSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;

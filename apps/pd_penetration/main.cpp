@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
   std::string command;
   for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
   return pm::apps::guarded("pd_penetration", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     pm::io::NosbPdSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;

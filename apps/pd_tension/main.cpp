@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
   pm::apps::add_restart_options(app, ropt);
   CLI11_PARSE(app, argc, argv);
   return pm::apps::guarded("pd_tension", [&] {
-    pm::apps::KokkosSession kokkos(opt.threads);
+    pm::apps::KokkosSession kokkos(opt);
     pm::io::NosbPdSceneOptions so;
     so.accuracy = opt.accuracy;
     so.precision = opt.precision;

@@ -12,6 +12,8 @@
 
 #include <cmath>
 
+#include "core/float_env.hpp"
+
 #if !defined(KOKKOS_VERSION)
 #error "polymech needs Kokkos >= 3.4 (KOKKOS_VERSION is not defined)"
 #endif
@@ -77,8 +79,10 @@ inline int concurrency() {
   return static_cast<int>(ExecSpace().concurrency());
 }
 
-// Kokkos::initialize with a thread count, for tests and apps; works from 3.4 to 5.x.
-inline void initialize(int num_threads = -1) {
+// Kokkos::initialize with a thread count, for tests and apps; works from 3.4 to 5.x. Then sets the
+// subnormal mode (float_env.hpp: flushed to zero unless POLYMECH_SUBNORMALS=keep or the app says so)
+// on the calling thread and on every host thread; a bad POLYMECH_SUBNORMALS is refused before Kokkos starts.
+inline void initialize(int num_threads = -1, Subnormals subnormals = subnormals_from_environment()) {
 #if POLYMECH_KOKKOS_AT_LEAST(3, 7)
   Kokkos::InitializationSettings settings;
   if (num_threads > 0) settings.set_num_threads(num_threads);
@@ -88,6 +92,7 @@ inline void initialize(int num_threads = -1) {
   args.num_threads = num_threads;
   Kokkos::initialize(args);
 #endif
+  set_host_subnormals(subnormals);
 }
 
 }  // namespace polymech::kx

@@ -75,6 +75,16 @@ struct RunHooks {
   // continue from this checkpoint: the driver loads the model from it (run wrappers load their own
   // records); nullptr: start from the model's current state
   const Archive* resume = nullptr;
+  // every n steps (and at the end) count the subnormal values of the model's state (StateRegistry::
+  // subnormal_census; a diagnostic that copies the state to the host, issue 39); 0: never
+  std::int64_t census_every = 0;
+};
+
+// The largest share of subnormal values each View of the state held at a census, and the step.
+struct SubnormalPeak {
+  std::string name;
+  double share = 0.0;
+  std::int64_t step = -1;
 };
 
 struct RunStats {
@@ -88,6 +98,7 @@ struct RunStats {
   std::int64_t last_good_step = -1;  // the step of the last good state (snapshotted when kept)
   std::int64_t checkpoints = 0;      // written during this run
   std::int64_t restarts = 0;         // times the run was resumed from a checkpoint
+  std::vector<SubnormalPeak> subnormals;  // per View of the state, with hooks.census_every > 0
 };
 
 namespace detail {
@@ -163,6 +174,15 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
     s.reason = "the first bad " + detail::describe(h, Model::dimension);
     return false;
   };
+  auto census = [&](std::int64_t k) {
+    const auto c = m.state().subnormal_census();
+    if (s.subnormals.size() != c.size()) s.subnormals.assign(c.size(), SubnormalPeak{});
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const double share = c[i].values > 0 ? double(c[i].subnormal) / double(c[i].values) : 0.0;
+      s.subnormals[i].name = c[i].name;
+      if (share > s.subnormals[i].share || s.subnormals[i].step < 0) s.subnormals[i] = {c[i].name, share, k};
+    }
+  };
   auto keep = [&]() {
     if (!wd.keep_last_good) return;
     m.state().save(last_good);
@@ -192,6 +212,7 @@ RunStats run(Model& m, std::int64_t steps, const RunHooks& hooks = {}) {
     }
     if (sample_due && hooks.stop) s.stopped = hooks.stop();
     if (hooks.snapshot && hooks.snapshot_every > 0 && (k % hooks.snapshot_every == 0 || s.stopped)) hooks.snapshot(k);
+    if (hooks.census_every > 0 && (k % hooks.census_every == 0 || k == end)) census(k);
     if (hooks.after_step) hooks.after_step(k);
     if (k < end && !s.stopped && checkpoint_due(k)) write_checkpoint(k);
   }

@@ -8,17 +8,26 @@
 // here either.
 #pragma once
 
-#include <functional>
-#include <string>
-#include <vector>
-
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
 
 #include "common/archive.hpp"
 #include "core/types.hpp"
 
 namespace polymech::models {
+
+// How many of a floating-point View's values are subnormal (0 < |x| < the type's smallest normal).
+struct SubnormalCount {
+  std::string name;
+  std::int64_t subnormal = 0, values = 0;
+};
 
 class StateRegistry {
  public:
@@ -57,6 +66,17 @@ class StateRegistry {
       std::memcpy(static_cast<void*>(h.data()), b.data(), b.size());
       Kokkos::deep_copy(v, h);
     };
+    using value_type = typename View::non_const_value_type;
+    if constexpr (std::is_floating_point_v<value_type>) {
+      e.count_subnormals = [v] {
+        auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), v);
+        const value_type* p = h.data();
+        std::int64_t n = 0;
+        for (std::size_t i = 0; i < h.span(); ++i)
+          n += (p[i] != value_type(0) && std::abs(p[i]) < std::numeric_limits<value_type>::min()) ? 1 : 0;
+        return std::make_pair(n, static_cast<std::int64_t>(h.span()));
+      };
+    }
     entries_.push_back(std::move(e));
   }
 
@@ -73,6 +93,18 @@ class StateRegistry {
     std::vector<std::string> n;
     for (const auto& e : entries_) n.push_back(e.name);
     return n;
+  }
+
+  // The subnormal values of every floating-point View (issue 39: where a model meets them when they are
+  // kept); copies each View to the host, so it is a diagnostic (RunHooks::census_every), not a hot path.
+  std::vector<SubnormalCount> subnormal_census() const {
+    std::vector<SubnormalCount> c;
+    for (const auto& e : entries_) {
+      if (!e.count_subnormals) continue;
+      const auto [n, size] = e.count_subnormals();
+      c.push_back({e.name, n, size});
+    }
+    return c;
   }
 
   // Allocates backup storage for every View (once) and copies the state into it.
@@ -104,6 +136,7 @@ class StateRegistry {
     std::function<void(std::vector<std::function<void()>>&, std::vector<std::function<void()>>&)> make_backup;
     std::function<void(Archive&, const std::string&)> to_archive;
     std::function<void(const Archive&, const std::string&)> from_archive;
+    std::function<std::pair<std::int64_t, std::int64_t>()> count_subnormals;  // floating-point Views only
   };
   std::vector<Entry> entries_;
 };
