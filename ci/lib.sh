@@ -23,14 +23,56 @@ packages_installed() {
   done
 }
 
+# --- a busy apt -------------------------------------------------------------------------------------
+# Another apt or dpkg process (unattended-upgrades, a user's apt-get) may hold apt's locks when this runs:
+# wait for them, up to POLYMECH_APT_WAIT seconds (default 900), saying who holds them, rather than fail.
+# POLYMECH_APT_LOCKS replaces the list of lock files (tests/ci/test_apt_wait.sh uses its own).
+APT_LOCKS="${POLYMECH_APT_LOCKS:-/var/lib/dpkg/lock-frontend /var/lib/dpkg/lock /var/lib/apt/lists/lock /var/cache/apt/archives/lock}"
+POLYMECH_APT_WAIT="${POLYMECH_APT_WAIT:-900}"
+POLYMECH_APT_POLL="${POLYMECH_APT_POLL:-5}"
+
+# The PID of a process holding one of APT_LOCKS (a POSIX lock in /proc/locks on the file's inode), or nothing.
+apt_lock_holder() {
+  local f ino pid
+  for f in $APT_LOCKS; do
+    [ -e "$f" ] || continue
+    ino="$(stat -c %i "$f")"
+    pid="$(awk -v ino="$ino" '$2 != "->" { n = split($6, p, ":"); if (p[n] == ino) { print $5; exit } }' /proc/locks)"
+    if [ -n "$pid" ]; then echo "$pid ($f)"; return 0; fi
+  done
+}
+
+apt_wait_for_lock() {
+  local waited=0 holder
+  while holder="$(apt_lock_holder)"; [ -n "$holder" ]; do
+    if [ "$waited" -eq 0 ]; then
+      log "apt is busy: process $holder holds its lock ($(ps -o comm= -p "${holder%% *}" 2>/dev/null || echo 'gone')); waiting up to ${POLYMECH_APT_WAIT} s (POLYMECH_APT_WAIT)"
+    fi
+    if [ "$waited" -ge "$POLYMECH_APT_WAIT" ]; then
+      die "apt is still busy after ${POLYMECH_APT_WAIT} s: process $holder holds its lock; let it finish and run this again, or set POLYMECH_APT_WAIT=<seconds> to wait longer"
+    fi
+    sleep "$POLYMECH_APT_POLL"
+    waited=$((waited + POLYMECH_APT_POLL))
+  done
+  if [ "$waited" -gt 0 ]; then log "apt is free after ${waited} s"; fi
+  return 0
+}
+
+# apt-get after waiting for its locks; apt itself also waits for the dpkg lock (DPkg::Lock::Timeout) in
+# case another process takes it between the check and the call.
+apt_get() {
+  apt_wait_for_lock
+  $SUDO apt-get -o DPkg::Lock::Timeout="$POLYMECH_APT_WAIT" "$@"
+}
+
 # apt-get with the machine's own sources (used for packages from 'main').
 apt_install() {
   local missing=() p
   for p in "$@"; do packages_installed "$p" || missing+=("$p"); done
   [ ${#missing[@]} -eq 0 ] && return 0
   log "installing Debian packages: ${missing[*]}"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  apt_get update -qq
+  DEBIAN_FRONTEND=noninteractive apt_get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
 # A private apt configuration derived from the machine's own sources: the same mirrors and suites,
@@ -38,7 +80,7 @@ apt_install() {
 # are never edited; the private list lives in the cache and apt is pointed at it with -o options.
 PRIVATE_APT_DIR="$POLYMECH_CACHE/apt"
 private_apt() {
-  $SUDO apt-get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
+  apt_get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
     -o Dir::Etc::SourceParts=/dev/null -o Dir::State::Lists="$PRIVATE_APT_DIR/lists" "$@"
 }
 
@@ -99,7 +141,7 @@ private_apt_install() {
   [ ${#missing[@]} -eq 0 ] && return 0
   private_apt_setup
   log "installing Debian packages (private sources): ${missing[*]}"
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
+  DEBIAN_FRONTEND=noninteractive apt_get -o Dir::Etc::SourceList="$PRIVATE_APT_DIR/sources.list" \
     -o Dir::Etc::SourceParts=/dev/null -o Dir::State::Lists="$PRIVATE_APT_DIR/lists" \
     install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
@@ -157,6 +199,21 @@ openmp_kokkos_root() {
   if [ -n "${Kokkos_ROOT:-}" ]; then echo "$Kokkos_ROOT"; return 0; fi
   build_kokkos "kokkos-$KOKKOS_VERSION_WANTED-openmp" -DKokkos_ENABLE_OPENMP=ON \
     -DCMAKE_POSITION_INDEPENDENT_CODE=ON
+}
+
+# build_and_test PRESET WHAT [CTEST_JOBS]: configure PRESET once, build it (ccache), then run its ctest
+# preset; WHAT names it in the log. Needs setup_host first.
+build_and_test() {
+  local preset="$1" what="$2" jobs="${3:-$POLYMECH_JOBS}" t0=$SECONDS
+  cd "$POLYMECH_ROOT"
+  export Kokkos_ROOT="$KOKKOS_OPENMP_ROOT"
+  if [ ! -f "build/$preset/build.ninja" ]; then
+    cmake --preset "$preset" >/dev/null
+  fi
+  cmake --build --preset "$preset" -j "$POLYMECH_JOBS"
+  log "$what build [$((SECONDS - t0)) s]; running its tests"
+  ctest --preset "$preset" -j "$jobs"
+  log "$what tests passed [$((SECONDS - t0)) s]"
 }
 
 setup_host() {

@@ -6,13 +6,4 @@
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 setup_host
 apt_install openmpi-bin libopenmpi-dev libmetis-dev ccache
-cd "$POLYMECH_ROOT"
-export Kokkos_ROOT="$KOKKOS_OPENMP_ROOT"
-export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
-t0=$SECONDS
-if [ ! -f build/mpi/build.ninja ]; then
-  cmake --preset mpi >/dev/null
-fi
-cmake --build --preset mpi -j "$POLYMECH_JOBS"
-log "MPI build (helmholtz, test_helmholtz_mpi) [$((SECONDS - t0)) s]; running the 2- and 3-rank tests"
-ctest --preset mpi
+build_and_test mpi "MPI (helmholtz, test_helmholtz_mpi: 2 and 3 ranks)" 1

@@ -8,16 +8,8 @@
 #   bash ci/sanitize.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 setup_host
-cd "$POLYMECH_ROOT"
-export Kokkos_ROOT="$KOKKOS_OPENMP_ROOT"
-export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
 t0=$SECONDS
-if [ ! -f build/sanitize/build.ninja ]; then
-  cmake --preset sanitize >/dev/null
-fi
-cmake --build --preset sanitize -j "$POLYMECH_JOBS"
-log "sanitizer build (unit tests) [$((SECONDS - t0)) s]; running them"
-ctest --preset sanitize -j "$POLYMECH_JOBS"
+build_and_test sanitize "sanitizer (unit tests)"
 log "scene fuzzer under the sanitizers (every 50th variant)"
 OMP_NUM_THREADS=1 OMP_PROC_BIND=false build/sanitize/tests/fuzz/fuzz_scenes --source "$POLYMECH_ROOT" --stride 50 | grep -E "^BAD|^fuzz_scenes:"
 log "sanitizers: no report [$((SECONDS - t0)) s]"

@@ -251,16 +251,20 @@ TEST(IsphBody, NeutralBuoyancyStaysPut) {
 // A body released onto the tank's bottom: run `steps` steps (stopping on the first non-finite state) and
 // measure the lowest gap between body and bottom over the run, the contact force averaged over the last
 // `average` steps, the final gap, speed and sideways move. R = 0.03, started at x = 0.1 (body_config).
+// Over the last `average` steps (the window) also the body's mean and largest speed and its largest gap: a
+// landing in agitated water is chaotic (round-off of another CPU's vector width or FMA gives another
+// trajectory, issue 31), so its assertions bound what holds over a window, not a snapshot.
 struct Landing {
   bool finite = true;
   std::string problem;
   double lowest = 1e300, contact = 0.0, gap = 0.0, speed = 0.0, sideways = 0.0, net_weight = 0.0;
+  double window_speed_mean = 0.0, window_speed_max = 0.0, window_gap_max = -1e300;
 };
 static Landing land(const ip::Config& c, int steps, int average) {
   ip::Isph<double, 2> m(c);
   const double R = 0.03;
   Landing r;
-  double contact_sum = 0.0;
+  double contact_sum = 0.0, speed_sum = 0.0;
   for (int k = 0; k < steps; ++k) {
     m.step();
     if (!m.health().finite) {
@@ -269,10 +273,18 @@ static Landing land(const ip::Config& c, int steps, int average) {
       return r;
     }
     r.lowest = std::min(r.lowest, m.body().centre[1] - R);
-    if (k >= steps - average) contact_sum += m.body().contact_force[1];
+    if (k >= steps - average) {
+      const auto& b = m.body();
+      const double speed = std::hypot(b.v[0], b.v[1]);
+      contact_sum += b.contact_force[1];
+      speed_sum += speed;
+      r.window_speed_max = std::max(r.window_speed_max, speed);
+      r.window_gap_max = std::max(r.window_gap_max, b.centre[1] - R);
+    }
   }
   const auto& b = m.body();
   r.contact = contact_sum / average;
+  r.window_speed_mean = speed_sum / average;
   r.gap = b.centre[1] - R;
   r.speed = std::hypot(b.v[0], b.v[1]);
   r.sideways = b.centre[0] - 0.1;
@@ -430,15 +442,29 @@ TEST(IsphBody, VeryDenseBodyLandsAndRests) {
     const auto r = land(c, 1000, 100);
     ASSERT_TRUE(r.finite) << r.problem;
     std::printf("density ratio 3 (%s): lowest gap %.3f l0 (Hertz overlap at the free-fall speed %.2f l0), final gap "
-                "%.3f l0, speed %.3g m/s, contact force %.1f N/m (weight - buoyancy %.1f), sideways %.3g m\n",
+                "%.3f l0, speed %.3g m/s, contact force %.1f N/m (weight - buoyancy %.1f), sideways %.3g m; over the "
+                "last 100 steps: speed mean %.3g / max %.3g m/s (free fall %.3g m/s), largest gap %.3f l0\n",
                 paper ? "the paper's choices" : "divergence or density, alpha 0.1", r.lowest / l0, hertz_overlap / l0,
-                r.gap / l0, r.speed, r.contact, r.net_weight, r.sideways);
+                r.gap / l0, r.speed, r.contact, r.net_weight, r.sideways, r.window_speed_mean, r.window_speed_max,
+                hertz.reference_speed, r.window_gap_max / l0);
     EXPECT_GT(r.lowest, -hertz_overlap);  // never through the bottom
-    EXPECT_LT(r.gap, 0.05 * l0);          // on it
-    // measured 1.4e-3 m/s (either test, alpha 0.1): at rest; 0.032 m/s with the paper's choices, whose water
-    // stays agitated after the landing (the body rocks sideways by a few cm; docs/VALIDATION.md)
-    EXPECT_LT(r.speed, paper ? 0.1 : 0.02);
-    EXPECT_GT(r.contact, 0.9 * r.net_weight);  // measured 114.6 / 106.3 N/m: the sealed contact (see above)
+    // On it over the whole last 100 steps (window), not only at the end. Measured -0.149 l0 (either test,
+    // alpha 0.1); -0.109 to -0.143 l0 with the paper's choices.
+    EXPECT_LT(r.window_gap_max, 0.05 * l0);
+    if (!paper) {
+      // at rest: measured 1.3e-3 / 1.9e-3 m/s (mean / largest over the window), the same in every build
+      EXPECT_LT(r.window_speed_max, 0.02);
+    } else {
+      // With the paper's choices the water stays agitated after the landing and the body rocks sideways
+      // by a few cm (docs/VALIDATION.md): a chaotic motion, whose value at one step depends on the
+      // round-off of the CPU and build (issue 31: the final speed measured 0.034 m/s here with one thread,
+      // 0.138 with two, 0.096 built for x86-64-v2, 0.161 on an AVX-512 Xeon). What holds in every build
+      // is that the landing's energy is gone: the mean speed over the window is below a tenth of the
+      // free-fall speed (1 % of the impact's kinetic energy). Measured 0.045 to 0.095 m/s.
+      EXPECT_LT(r.window_speed_mean, 0.1 * hertz.reference_speed);
+    }
+    // the bottom carries the body: measured 85.6 to 114.6 N/m, mean over the window (the sealed contact, see above)
+    EXPECT_GT(r.contact, 0.9 * r.net_weight);
     EXPECT_LT(r.contact, 3.0 * r.net_weight);
   }
 }
