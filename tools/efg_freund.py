@@ -36,10 +36,12 @@ nu = 0.25 and 0.394), where k_a is 0.94 - 0.75 of it.
 The integrals: eta = a + (b - a)(1 - cos phi)/2 (removes the square-root end points), Gauss-Legendre in phi.
 """
 import csv
-import json
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded, read_json  # noqa: E402
 
 
 def paths(d):
@@ -50,11 +52,15 @@ def paths(d):
 
 def read(d):
     js, cs = paths(d)
+    for p in (cs, js):
+        if not os.path.isfile(p):
+            raise InputError(f"{p}: not found (give an efg dynamic run's --out folder, or DIR/prefix of stored runs)")
     with open(cs) as f:
         rows = list(csv.DictReader(f))
+    if not rows or "t_us" not in rows[0] or "K_factor_mean" not in rows[0]:
+        raise InputError(f"{cs}: not a sif_history.csv of the efg app (columns t_us, K_factor_mean, ...)")
     h = {k: [float(r[k]) for r in rows] for k in rows[0]}
-    with open(js) as f:
-        s = json.load(f)
+    s = read_json(js)
     return h, s
 
 
@@ -296,6 +302,9 @@ def spread(h, i):
 
 
 def main():
+    if "-h" in sys.argv[1:] or "--help" in sys.argv[1:]:
+        print(__doc__)
+        return 0
     if "--self-test" in sys.argv:
         return self_test()
     if "--fft-check" in sys.argv:
@@ -305,6 +314,10 @@ def main():
     if "--png" in sys.argv:
         png = sys.argv[sys.argv.index("--png") + 1]
         args = [a for a in args if a != png]
+    if not args:
+        raise InputError("give STAT_DIR RUN_DIR[:label] ... (efg dynamic runs' --out folders; --help for more)")
+    if len(args) < 2:
+        raise InputError(f"{args[0]}: give a running-crack run after the stationary one (STAT_DIR RUN_DIR[:label] ...)")
     E, nu, rho = 7.562e9, 0.394, 1191.0
     cd, cs, cR = wave_speeds(E, nu, rho)
     print(f"plane strain: c_d = {cd:.1f} m/s, c_s = {cs:.1f} m/s, c_R = {cR:.1f} m/s")
@@ -318,6 +331,8 @@ def main():
     print("| run | v [m/s] | k(v) exact | k_a(v) | k_g(v) | K_run/K_stat at t0+dt | mean over (t0, t0+0.5 us] | mean while running | J' spread running (mean / max) | after arrest (mean / max) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for label, h, s in runs:
+        if "growth_speed" not in s:
+            raise InputError(f"{s.path}: no growth_speed (not a running-crack efg run)")
         v = s["growth_speed"]
         t0 = s["growth_start_us"]
         a0 = s["j_radii"] and None
@@ -330,11 +345,14 @@ def main():
         sp_run, sp_arr = [], []
         for i, t in enumerate(h["t_us"]):
             j = min(range(len(ts)), key=lambda q: abs(ts[q] - t))
-            if t0 + 0.5 * dt < t <= t_end + 0.01 * dt:
+            if t0 + 0.5 * dt < t <= t_end + 0.01 * dt and hs["K_factor_mean"][j] != 0:
                 ratio.append((t, h["K_factor_mean"][i] / hs["K_factor_mean"][j]))
                 sp_run.append(spread(h, i))
             elif t > t_end + 0.5 * dt:
                 sp_arr.append(spread(h, i))
+        if not ratio:
+            print(f"| {label} | {v:.0f} | {ke:.3f} | {ka:.3f} | {kg:.3f} | - | - | - | - | - |  (no sample of both runs while running)")
+            continue
         first = ratio[0][1]
         early = [r for t, r in ratio if t <= t0 + 0.5 + 1e-6]
         mean_early = sum(early) / len(early)
@@ -369,4 +387,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    guarded(main)

@@ -19,6 +19,9 @@ import os
 import statistics
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded  # noqa: E402
+
 
 def load(folder):
     runs = {}
@@ -42,7 +45,12 @@ def part_stats(s):
 
 
 def main(folder):
+    if not os.path.isdir(folder):
+        raise InputError(f"{folder}: no such folder (give the --out folder of bench/scaling_helmholtz.sh)")
     runs = load(folder)
+    if not runs:
+        raise InputError(f"{os.path.join(folder, '<case>', 'ranks<R>', 'summary.json')}: no such files "
+                         "(give the --out folder of bench/scaling_helmholtz.sh)")
     bytes_per_dof = 16  # complex double
     # one-rank costs and two-rank communication, per case
     base, fit = {}, []
@@ -118,6 +126,8 @@ def main(folder):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit("usage: helmholtz_scaling.py <folder of bench/scaling_helmholtz.sh>")
-    main(sys.argv[1])
+    import argparse
+
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("folder", help="the output folder of bench/scaling_helmholtz.sh")
+    guarded(lambda: main(ap.parse_args().folder))

@@ -11,12 +11,11 @@ import json
 import os
 import re
 import subprocess
+import sys
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded, pyplot  # noqa: E402
 
 
 def variant(text, key, value):
@@ -24,11 +23,17 @@ def variant(text, key, value):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--app", default="build/ci/bin/efg")
-    ap.add_argument("--scene", default="scenes/efg/edge_crack_static.toml")
-    ap.add_argument("--out", default="docs/figures/efg")
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--app", default="build/ci/bin/efg", help="the efg binary (default: build/ci/bin/efg)")
+    ap.add_argument("--scene", default="scenes/efg/edge_crack_static.toml", help="the scene the variants are made of")
+    ap.add_argument("--out", default="docs/figures/efg", help="where accuracy_cost.csv and .png go")
     a = ap.parse_args()
+    if not os.access(a.app, os.X_OK):
+        raise InputError(f"{a.app}: no such program (build it: cmake --build --preset ci --target efg; or give --app)")
+    if not os.path.isfile(a.scene):
+        raise InputError(f"{a.scene}: not found (give --scene)")
+    os.makedirs(a.out, exist_ok=True)
+    plt = pyplot()
     base = open(a.scene).read()
     rows = []
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
@@ -72,7 +77,8 @@ def main():
         x.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "accuracy_cost.png"), dpi=110)
+    print(f"plot: {os.path.join(a.out, 'accuracy_cost.png')}")
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

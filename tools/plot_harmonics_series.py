@@ -3,28 +3,47 @@
 panel per resolution, the analysis window shaded (3 drive periods from `window_start`).
 
   /usr/bin/python3 tools/plot_harmonics_series.py out/accuracy_cost/crack_p_wave [double|float] [period]
+  /usr/bin/python3 tools/plot_harmonics_series.py out/accuracy_cost [double|float] [period]   # every prefix in it
 
 reads <prefix>_series_<precision>_c<factor>.csv (written by bench/sweep_mps_harmonics) and writes
 <prefix>_series_<precision>.png. `period` is the drive period in seconds (default 5e-7, the paper's 2 MHz).
+Given the sweep's folder, it does so for every <prefix> with such files in it.
 """
+import argparse
 import glob
+import os
 import re
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded, pyplot  # noqa: E402
 
 
 def main():
-    prefix = sys.argv[1] if len(sys.argv) > 1 else "out/accuracy_cost/crack_p_wave"
-    precision = sys.argv[2] if len(sys.argv) > 2 else "double"
-    period = float(sys.argv[3]) if len(sys.argv) > 3 else 5e-7
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("prefix", nargs="?", default="out/accuracy_cost/crack_p_wave",
+                    help="<folder>/<case> of the sweep's files, or the folder (default: out/accuracy_cost/crack_p_wave)")
+    ap.add_argument("precision", nargs="?", default="double", choices=("double", "float"))
+    ap.add_argument("period", nargs="?", type=float, default=5e-7, help="drive period [s] (default 5e-7)")
+    a = ap.parse_args()
+    if os.path.isdir(a.prefix):
+        files = glob.glob(os.path.join(a.prefix, f"*_series_{a.precision}_c*.csv"))
+        prefixes = sorted({re.sub(rf"_series_{a.precision}_c[0-9.]+\.csv$", "", f) for f in files})
+        if not prefixes:
+            raise InputError(f"{a.prefix}: no <case>_series_{a.precision}_c*.csv in this folder: run bench/sweep_mps_harmonics first")
+    else:
+        prefixes = [a.prefix]
+    for prefix in prefixes:
+        plot(prefix, a.precision, a.period)
+
+
+def plot(prefix, precision, period):
+    plt = pyplot()
     files = glob.glob(f"{prefix}_series_{precision}_c*.csv")
     if not files:
-        sys.exit(f"no {prefix}_series_{precision}_c*.csv: run bench/sweep_mps_harmonics first")
+        raise InputError(f"{prefix}_series_{precision}_c*.csv: no such files: run bench/sweep_mps_harmonics first")
     factor = lambda f: float(re.search(r"_c([0-9.]+)\.csv$", f).group(1))  # noqa: E731
     files.sort(key=factor, reverse=True)
     fig, axes = plt.subplots(len(files), 1, figsize=(9, 2.4 * len(files)), sharex=True, squeeze=False)
@@ -42,8 +61,9 @@ def main():
     fig.tight_layout()
     out = f"{prefix}_series_{precision}.png"
     fig.savefig(out, dpi=110)
+    plt.close(fig)
     print(out)
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

@@ -2,6 +2,7 @@
 """Accuracy-cost (Pareto) plots of the Helmholtz sweep (bench/sweep_helmholtz).
 
   /usr/bin/python3 tools/plot_helmholtz_accuracy_cost.py [--cpu] out/accuracy_cost/helmholtz_*.csv
+  /usr/bin/python3 tools/plot_helmholtz_accuracy_cost.py [--cpu] out/accuracy_cost    # every helmholtz_*.csv in it
 
 For each case: L2 error (eq. (28)) against wall time (set-up + solve) and against DoFs, one line per
 order p = 1..4, double (filled markers) and float (open markers); the grey staircase is the Pareto
@@ -11,17 +12,15 @@ cost of each order (double) to reach each target (or its best error where it nev
 --cpu measures cost in process CPU time instead of wall time (on a shared machine wall time includes
 the time other jobs held the cores; with one thread CPU time is the run's own time).
 """
+import argparse
+import glob
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting import load_csv  # noqa: E402
+from plotting import InputError, guarded, load_csv, pyplot  # noqa: E402
 
 COLORS = {1: "tab:blue", 2: "tab:orange", 3: "tab:green", 4: "tab:red"}
 TARGETS = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
@@ -84,7 +83,8 @@ def per_order_table(col, case):
 
 
 def plot(path):
-    col = load_csv(path)
+    plt = pyplot()
+    col = load_csv(path, required=("is_float", "order", "dofs", "l2_error", "frequency", TIME))
     case = os.path.basename(path).replace("helmholtz_", "").replace(".csv", "")
     freq = col["frequency"][0] if col["frequency"].size else 0
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
@@ -112,6 +112,7 @@ def plot(path):
     fig.tight_layout()
     out = os.path.splitext(path)[0] + ".png"
     fig.savefig(out, dpi=110)
+    plt.close(fig)
     md = os.path.splitext(path)[0] + "_cheapest.md"
     with open(md, "w") as f:
         f.write(cheapest_table(col, case) + "\n" + per_order_table(col, case))
@@ -120,14 +121,27 @@ def plot(path):
 
 def main():
     global TIME
-    args = sys.argv[1:]
-    if "--cpu" in args:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("csv", nargs="*", default=["out/accuracy_cost/helmholtz_cube.csv"],
+                    help="CSVs of bench/sweep_helmholtz, or their folder (default: out/accuracy_cost/helmholtz_cube.csv)")
+    ap.add_argument("--cpu", action="store_true", help="cost in process CPU time instead of wall time")
+    a = ap.parse_args()
+    if a.cpu:
         TIME = "cpu_seconds"
-        args.remove("--cpu")
-    paths = args or ["out/accuracy_cost/helmholtz_cube.csv"]
+    paths = []
+    for p in a.csv:
+        if os.path.isdir(p):
+            found = sorted(glob.glob(os.path.join(p, "helmholtz_*.csv")))
+            if not found:
+                raise InputError(f"{os.path.join(p, 'helmholtz_*.csv')}: no such files (run bench/sweep_helmholtz --out {p})")
+            paths += found
+        elif not os.path.exists(p):
+            raise InputError(f"{p}: no such file or folder (give a CSV of bench/sweep_helmholtz or its folder)")
+        else:
+            paths.append(p)
     for p in paths:
         plot(p)
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

@@ -6,26 +6,19 @@ for a profile, the pressure along the line next to the analytic one (seed 002 pa
 
 Writes convergence.png and profile.png into the run folder.
 """
-import json
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting import load_csv  # noqa: E402
+from plotting import guarded, load_csv, pyplot, read_summary, run_folder, run_parser  # noqa: E402
 
 
 def main():
-    run = sys.argv[1] if len(sys.argv) > 1 else "out/helmholtz"
-    with open(os.path.join(run, "summary.json")) as f:
-        s = json.load(f)
+    run = run_folder(run_parser(__doc__, "out/helmholtz").parse_args().run)
+    s = read_summary(run, cases=("helmholtz",))
     title = f"{s['title']}\np = {s['order']}, {s['dofs']} DoFs, {s['precision']}"
-    c = load_csv(os.path.join(run, "convergence.csv"))
+    c = load_csv(os.path.join(run, "convergence.csv"), required=("iteration", "relative_residual"))
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.semilogy(c["iteration"], c["relative_residual"])
     ax.axhline(s["tolerance"], color="0.5", ls="--", label=f"tolerance {s['tolerance']:g}")
@@ -58,4 +51,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

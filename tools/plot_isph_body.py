@@ -2,41 +2,42 @@
 """The body's history in ISPH runs with a rigid body: its centre height and the fluid force on it against
 time, from the series.csv of one or more runs (the isph app writes it every `time.sample_every`).
 
-    /usr/bin/python3 tools/plot_isph_body.py RUN_DIR[:label] ... --png body.png [--weight]
+    /usr/bin/python3 tools/plot_isph_body.py RUN_DIR[:label] ... [--png body.png] [--weight]
 
-RUN_DIR holds series.csv and summary.json. With --weight the force panel also shows each body's weight less
+RUN_DIR holds series.csv and summary.json (an isph run's --out folder); the plot goes to --png, by default
+body.png in the first RUN_DIR. With --weight the force panel also shows each body's weight less
 its buoyancy when immersed (summary keys body_weight, body_buoyancy_immersed), the force a resting body's
 support must carry.
 """
 import argparse
-import json
 import os
 import sys
 
-from plotting import load_csv
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded, load_csv, pyplot, read_summary, run_folder  # noqa: E402
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("runs", nargs="+", help="RUN_DIR[:label]")
-    ap.add_argument("--png", required=True)
+    ap.add_argument("--png", help="the plot (default: body.png in the first RUN_DIR)")
     ap.add_argument("--weight", action="store_true", help="draw weight - buoyancy in the force panel")
     a = ap.parse_args()
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 5.6), sharex=True)
+    runs = []
     for spec in a.runs:
         path, _, label = spec.partition(":")
+        run_folder(path, what="an isph run's output folder")
+        s = read_summary(path, cases=("hydrostatic", "dam_break"))
         series = os.path.join(path, "series.csv")
-        if not os.path.exists(series):
-            sys.exit(f"plot_isph_body.py: {series} not found")
-        c = load_csv(series)
+        c = load_csv(series, required=("time",))
         if "body_y" not in c:
-            sys.exit(f"plot_isph_body.py: {series} has no body_y column (a run without a body)")
-        s = json.load(open(os.path.join(path, "summary.json")))
+            raise InputError(f"{series}: no body_y column (a run without a body)")
+        runs.append((path, label, s, c))
+    png = a.png or os.path.join(runs[0][0], "body.png")
+    plt = pyplot()
+
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 5.6), sharex=True)
+    for path, label, s, c in runs:
         label = label or s.get("title", path)
         line, = top.plot(c["time"], c["body_y"], label=label)
         bottom.plot(c["time"], c["body_force_y"], lw=0.6, color=line.get_color())
@@ -49,9 +50,9 @@ def main():
     bottom.set_xlabel("time [s]")
     bottom.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(a.png, dpi=110)
-    print(a.png)
+    fig.savefig(png, dpi=110)
+    print(png)
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

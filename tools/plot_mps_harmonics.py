@@ -8,23 +8,19 @@ writes into the run folder:
   spectrum.png        spectra normalised by the drive-frequency peak, harmonics marked          (Figs. 8, 10)
   contact_states.png  fractions of crack pairs in separation / stick / slip over time
 """
-import json
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting import load_csv  # noqa: E402
+from plotting import guarded, load_csv, pyplot, read_summary, run_folder, run_parser  # noqa: E402
 
 
 def main():
-    run = sys.argv[1] if len(sys.argv) > 1 else "out/mps_harmonics"
-    s = json.load(open(os.path.join(run, "summary.json")))
+    run = run_folder(run_parser(__doc__, "out/mps_harmonics").parse_args().run)
+    s = read_summary(run, cases=("mps_harmonics",))
+    plt = pyplot()
     comp, f0 = s["component"], s["drive_frequency"]
     title = f"{s['title']}\n{s['accuracy']} accuracy, {s['particles']} particles, {s['precision']}"
 
@@ -81,4 +77,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

@@ -1,25 +1,20 @@
 #!/usr/bin/python3
 """Plots of an mps_point_source run (seed 000 section 5.1).
 
-  python3 tools/plot_mps_point_source.py out/mps_point_source
+  /usr/bin/python3 tools/plot_mps_point_source.py out/mps_point_source
 
 writes into the run folder:
   snapshots.png   |u|/u0 at the snapshot steps (like the paper's Fig. 4)
   probe_A.png     |u|/u0 at probe A over time (like Fig. 5)
   arrivals.png    divergence (P) and rotation (S) at the wave-speed probes, with measured arrivals
 """
-import json
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting import load_csv  # noqa: E402
+from plotting import guarded, load_csv, open_h5, pyplot, read_summary, run_folder, run_parser, snapshot_steps  # noqa: E402
 
 
 def lattice_image(points, values):
@@ -31,17 +26,16 @@ def lattice_image(points, values):
 
 
 def plot_snapshots(run, out):
+    """True when it wrote `out` (a run without snapshots after step 0 has none to draw)."""
     h5 = os.path.join(run, "fields.h5")
     if not os.path.exists(h5):
-        return
-    import h5py
-
-    with h5py.File(h5, "r") as f:
+        return False
+    plt = pyplot()
+    with open_h5(h5) as f:
         points = f["mesh/points"][:]
-        steps = sorted(k for k in f.keys() if k.startswith("step_"))
-        steps = [s for s in steps if int(s[5:]) > 0][:4]
+        steps = [s for s in snapshot_steps(f) if int(s[5:]) > 0][:4]
         if not steps:
-            return
+            return False
         fig, axes = plt.subplots(1, len(steps), figsize=(3.2 * len(steps), 5.2), squeeze=False)
         for ax, s in zip(axes[0], steps):
             img, extent = lattice_image(points, f[s]["abs_u_over_u0"][:])
@@ -53,16 +47,25 @@ def plot_snapshots(run, out):
         fig.colorbar(im, ax=axes[0].tolist(), shrink=0.7, label="|u| / u0")
         fig.savefig(out, dpi=110)
         plt.close(fig)
+    return True
 
 
 def main():
-    run = sys.argv[1] if len(sys.argv) > 1 else "out/mps_point_source"
-    summary = json.load(open(os.path.join(run, "summary.json")))
-    probes = load_csv(os.path.join(run, "probes.csv"))
+    run = run_folder(run_parser(__doc__, "out/mps_point_source").parse_args().run)
+    summary = read_summary(run, cases=("mps_point_source",))
+    if summary.get("diverged"):  # its summary names the reason; no probes.csv, its last snapshot is the last good state
+        drawn = plot_snapshots(run, os.path.join(run, "snapshots.png"))
+        print(f"{run}: the run diverged at step {summary.get('diverged_step')} ({summary.get('diverged_reason')}): "
+              + ("snapshots.png only" if drawn else "nothing to plot"))
+        return 0
+    probes = load_csv(os.path.join(run, "probes.csv"), required=("time",))
     t_us = probes["time"] * 1e6
     u0 = 10e-9
+    plt = pyplot()
+    written = []
 
-    plot_snapshots(run, os.path.join(run, "snapshots.png"))
+    if plot_snapshots(run, os.path.join(run, "snapshots.png")):
+        written.append("snapshots.png")
 
     if "A_u1" in probes:
         fig, ax = plt.subplots(figsize=(7, 3.5))
@@ -74,6 +77,7 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(run, "probe_A.png"), dpi=110)
         plt.close(fig)
+        written.append("probe_A.png")
 
     arr = summary.get("arrivals", {})
     fig, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
@@ -101,8 +105,9 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(run, "arrivals.png"), dpi=110)
     plt.close(fig)
-    print(f"plots in {run}: snapshots.png, probe_A.png, arrivals.png")
+    written.append("arrivals.png")
+    print(f"plots in {run}: {', '.join(written)}")
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)

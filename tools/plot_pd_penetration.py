@@ -6,25 +6,21 @@ and the damage in a cut through the plate along the projectile's axis.
 
 Writes projectile.png, energy.png and damage.png into the run folder.
 """
-import json
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotting import load_csv  # noqa: E402
+from plotting import guarded, load_csv, open_h5, pyplot, read_summary, run_folder, run_parser, snapshot_steps  # noqa: E402
 
 
 def main():
-    run = sys.argv[1] if len(sys.argv) > 1 else "out/pd_penetration"
-    summary = json.load(open(os.path.join(run, "summary.json")))
-    p = load_csv(os.path.join(run, "projectile.csv"))
-    e = load_csv(os.path.join(run, "energy.csv"))
+    run = run_folder(run_parser(__doc__, "out/pd_penetration").parse_args().run)
+    summary = read_summary(run, cases=("pd_penetration",))
+    p = load_csv(os.path.join(run, "projectile.csv"), required=("time", "velocity", "nose_position"))
+    e = load_csv(os.path.join(run, "energy.csv"), required=("time", "total"))
+    plt = pyplot()
     t = p["time"] * 1e6
 
     fig, ax = plt.subplots(1, 2, figsize=(10, 3.8))
@@ -41,7 +37,8 @@ def main():
     ax[1].set_ylabel("nose position [mm]")
     ax[1].legend(fontsize=8)
     ax[1].grid(alpha=0.3)
-    fig.suptitle(f"v0 = {summary['initial_velocity']} m/s -> {summary['residual_velocity']:.1f} m/s "
+    vr = summary["residual_velocity"]  # null when the run diverged
+    fig.suptitle(f"v0 = {summary['initial_velocity']} m/s -> {'-' if vr is None else f'{vr:.1f}'} m/s "
                  f"({summary['particles']} particles, c_v = {summary['c_v']})")
     fig.tight_layout()
     fig.savefig(os.path.join(run, "projectile.png"), dpi=110)
@@ -51,7 +48,7 @@ def main():
     for key, label in (("projectile_kinetic", "projectile kinetic"), ("kinetic", "plate kinetic"), ("strain", "elastic"),
                        ("plastic", "plastic work"), ("viscous_dissipated", "velocity viscosity"),
                        ("hourglass_work", "hourglass work"), ("contact", "contact"), ("short_range", "short-range springs")):
-        if np.any(e[key] != 0):
+        if key in e and np.any(e[key] != 0):
             ax.plot(te, e[key], label=label)
     ax.plot(te, e["total"], "k--", label="total")
     ax.set_xlabel("time [us]")
@@ -61,14 +58,12 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(run, "energy.png"), dpi=110)
 
-    try:
-        import h5py
-    except ImportError:
-        print("h5py missing: no damage.png")
-        return
-    with h5py.File(os.path.join(run, "fields.h5"), "r") as h:
+    with open_h5(os.path.join(run, "fields.h5")) as h:
         x = h["mesh/points"][...]
-        steps = sorted((k for k in h.keys() if k.startswith("step_")), key=lambda s: int(s.split("_")[1]))
+        steps = snapshot_steps(h)
+        if not steps:
+            print(f"plots: {run}/projectile.png, energy.png (fields.h5 has no snapshot: no damage.png)")
+            return
         last = h[steps[-1]]
         u = last["displacement"][...]
         d = last["damage"][...] if "damage" in last else np.zeros(len(x))
@@ -87,4 +82,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    guarded(main)
