@@ -20,7 +20,7 @@ import sys
 TIMING_KEYS = {"wall_seconds", "shape_function_evaluations_per_second", "wall_seconds_intact", "wall_seconds_crack", "steps_per_second", "sphere_steps_per_second", "threads", "command",
                "scene",
                # how the run treated subnormal numbers (flush or keep): a setting of the run, like the threads
-               "subnormals",
+               "subnormals", "version", "commit",  # and the build that ran (apps::summary_header)
                # the ISPH app's timings
                "particle_steps_per_second", "ppe_share_of_step",
                # the EFG app's timings

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/common/cli.hpp"
 #include "core/kokkos_shim.hpp"
 #include "io/cost.hpp"
 #include "io/output.hpp"
@@ -29,6 +30,8 @@ struct CommonOptions {
   std::string subnormals;  // "flush" | "keep"; "" = POLYMECH_SUBNORMALS, else flush (core/float_env.hpp)
 };
 
+inline constexpr std::int64_t max_steps = 1000000000000;  // --steps at most (1e12)
+
 // --scene, --out, --accuracy, --precision, --steps, --threads, --quiet, --dry-run, --subnormals.
 inline void add_common_options(CLI::App& app, CommonOptions& o, const std::string& default_scene,
                                const std::string& default_out) {
@@ -36,20 +39,20 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
   o.out = default_out;
   app.add_option("--scene", o.scene, "scene file (TOML)")->capture_default_str();
   app.add_option("--out", o.out, "output folder (created if missing)")->capture_default_str();
-  app.add_option("--accuracy", o.accuracy, "accuracy preset (default: the scene's [accuracy].default)")
-      ->check(CLI::IsMember({"draft", "standard", "paper"}));
-  app.add_option("--precision", o.precision, "floating-point precision of the kernels (default: the scene's)")
-      ->check(CLI::IsMember({"double", "float"}));
-  app.add_option("--steps", o.steps, "number of time steps (default: the scene's, scaled to the accuracy)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--threads", o.threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
-      ->check(CLI::PositiveNumber);
+  one_of(app.add_option("--accuracy", o.accuracy, "accuracy preset (default: the scene's [accuracy].default)"),
+         {"draft", "standard", "paper"});
+  one_of(app.add_option("--precision", o.precision, "floating-point precision of the kernels (default: the scene's)"),
+         {"double", "float"});
+  within<std::int64_t>(app.add_option("--steps", o.steps, "number of time steps (default: the scene's, scaled to the accuracy)"),
+                       1, max_steps);
+  within(app.add_option("--threads", o.threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)"), 1, max_threads,
+         "this machine has " + std::to_string(machine_cores()) + (machine_cores() == 1 ? " core" : " cores"));
   app.add_flag("--quiet", o.quiet, "no progress lines");
   app.add_flag("--dry-run", o.dry_run, "check the scene, print the run's size, memory and predicted time, and stop");
-  app.add_option("--subnormals", o.subnormals,
-                 "subnormal numbers in the host threads: flushed to zero (default; POLYMECH_SUBNORMALS sets it too) "
-                 "or kept; results do not depend on it, speed does (docs/METHODS.md)")
-      ->check(CLI::IsMember({"flush", "keep"}));
+  one_of(app.add_option("--subnormals", o.subnormals,
+                        "subnormal numbers in the host threads: flushed to zero (default; POLYMECH_SUBNORMALS sets it too) "
+                        "or kept; results do not depend on it, speed does (docs/METHODS.md)"),
+         {"flush", "keep"});
 }
 
 // Prints the cost estimate of the loaded scene before a run (stderr, unless --quiet), or for --dry-run
@@ -66,7 +69,8 @@ inline bool announce_cost(const char* name, const io::SceneHeader& scene, const 
   return false;
 }
 
-// The keys every summary.json starts with: the case, its scene file and title, and what it ran with.
+// The keys every summary.json starts with: the case, its scene file and title, what it ran with, and the
+// build (version, commit).
 inline nlohmann::json summary_header(const std::string& name, const io::SceneHeader& scene) {
   nlohmann::json j;
   j["case"] = name;
@@ -76,15 +80,26 @@ inline nlohmann::json summary_header(const std::string& name, const io::SceneHea
   j["precision"] = scene.precision;
   j["effects"] = std::vector<std::string>(scene.effects.names().begin(), scene.effects.names().end());
   j["subnormals"] = kx::to_string(kx::thread_subnormals());  // as this thread runs (every host thread alike)
+  j["version"] = version();  // the build: project() version and git commit (cli.hpp)
+  j["commit"] = commit();
   return j;
+}
+
+// The thread count Kokkos starts with: --threads, else OMP_NUM_THREADS (checked by parse_command_line),
+// else all cores but at most max_threads (more overrun Kokkos' OpenMP thread table, cli.hpp).
+inline int session_threads(int threads) {
+  if (threads > 0) return threads;
+  const auto env = cli::integer_from(std::getenv("OMP_NUM_THREADS"));
+  if ((!env || *env < 1) && machine_cores() > max_threads) return max_threads;
+  return -1;
 }
 
 // Kokkos for the lifetime of an app, with its threads and subnormal mode (--threads, --subnormals).
 class KokkosSession {
  public:
-  explicit KokkosSession(int threads) { kx::initialize(threads); }
+  explicit KokkosSession(int threads) { kx::initialize(session_threads(threads)); }
   explicit KokkosSession(const CommonOptions& o) {
-    kx::initialize(o.threads, o.subnormals.empty() ? kx::subnormals_from_environment()
+    kx::initialize(session_threads(o.threads), o.subnormals.empty() ? kx::subnormals_from_environment()
                                                    : kx::parse_subnormals(o.subnormals, "--subnormals"));
   }
   ~KokkosSession() { Kokkos::finalize(); }

@@ -34,11 +34,10 @@ struct RestartOptions {
 inline void add_restart_options(CLI::App& app, RestartOptions& r) {
   app.add_option("--restart", r.restart,
                  "continue the run whose output folder is DIR from its newest checkpoint (same scene and options)");
-  app.add_option("--checkpoint-every", r.checkpoint_every, "wall seconds between checkpoints (0: none)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e7));
-  app.add_option("--checkpoint-steps", r.checkpoint_steps, "also checkpoint every N steps (0: none)")
-      ->check(CLI::NonNegativeNumber);
+  within(app.add_option("--checkpoint-every", r.checkpoint_every, "wall seconds between checkpoints (0: none)")
+             ->capture_default_str(),
+         0.0, 1e7);
+  non_negative<std::int64_t>(app.add_option("--checkpoint-steps", r.checkpoint_steps, "also checkpoint every N steps (0: none)"));
   app.add_flag("--keep-checkpoints", r.keep_checkpoints, "keep the checkpoints after the run has finished");
 }
 

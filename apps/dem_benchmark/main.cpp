@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/dem/chung_ooi_test1.toml", "out/dem_benchmark");
   bool all = false;
   app.add_flag("--all", all, "run every chung_ooi_test*.toml in the scene's folder");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "dem_benchmark", argc, argv)) return *rc;
   return pm::apps::guarded("dem_benchmark", [&] {
     pm::apps::KokkosSession kokkos(opt);
     std::vector<std::filesystem::path> files = {opt.scene};

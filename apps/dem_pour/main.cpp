@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
   pm::apps::add_restart_options(app, ropt);
   std::string lammps_data;
   app.add_option("--lammps-data", lammps_data, "also write the initial spheres as a LAMMPS/LIGGGHTS data file");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "dem_pour", argc, argv)) return *rc;
   std::string command;
   for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
   return pm::apps::guarded("dem_pour", [&] {

@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/efg/edge_crack_static.toml", "out/efg");
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "efg", argc, argv)) return *rc;
   return pm::apps::guarded("efg", [&] {
     const auto scene = pm::io::load_efg_scene(opt.scene, opt.precision, opt.accuracy);
     if (pm::apps::announce_cost("efg", scene.header, scene.cost, opt)) return 0;

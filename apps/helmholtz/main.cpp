@@ -217,13 +217,12 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/helmholtz/cube.toml", "out/helmholtz");
   int order = 0;
   double frequency = 0;
-  app.add_option("--order", order, "element order p (default: the scene's)")->check(CLI::Range(1, 4));
-  app.add_option("--frequency", frequency, "frequency [Hz] (default: the scene's)")->check(CLI::PositiveNumber);
+  pm::apps::within(app.add_option("--order", order, "element order p (default: the scene's)"), 1, 4);
+  pm::apps::positive<double>(app.add_option("--frequency", frequency, "frequency [Hz] (default: the scene's)"));
   std::string partition = "automatic";
-  app.add_option("--partition", partition, "how an MPI run splits the mesh")
-      ->check(CLI::IsMember({"automatic", "structured", "metis"}))
-      ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  pm::apps::one_of(app.add_option("--partition", partition, "how an MPI run splits the mesh")->capture_default_str(),
+                   {"automatic", "structured", "metis"});
+  if (const auto rc = pm::apps::parse_command_line(app, "helmholtz", argc, argv)) return *rc;
   return pm::apps::guarded("helmholtz", [&] {
     if (opt.steps > 0) throw std::invalid_argument("--steps does not apply to a frequency-domain solve");
 #if POLYMECH_WITH_MPI

@@ -354,7 +354,7 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/isph/dam_break.toml", "out/isph");
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "isph", argc, argv)) return *rc;
   return pm::apps::guarded("isph", [&] {
     const auto scene = pm::io::load_isph_scene(opt.scene, opt.precision, opt.accuracy);
     if (pm::apps::announce_cost("isph", scene.header, scene.cost, opt)) return 0;

@@ -190,10 +190,10 @@ int main(int argc, char** argv) {
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/mps/crack_p_wave.toml", "out/mps_harmonics");
   double k_prime = 0.0;
-  app.add_option("--k-prime", k_prime, "override the contact stiffness factor k' of eq. (19)")->check(CLI::Range(1e-6, 1.999));
+  pm::apps::within(app.add_option("--k-prime", k_prime, "override the contact stiffness factor k' of eq. (19)"), 1e-6, 1.999);
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "mps_harmonics", argc, argv)) return *rc;
   return pm::apps::guarded("mps_harmonics", [&] {
     pm::apps::KokkosSession kokkos(opt);
     pm::io::MpsSceneOptions so;

@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   pm::apps::add_common_options(app, opt, "scenes/mps/point_source.toml", "out/mps_point_source");
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "mps_point_source", argc, argv)) return *rc;
   return pm::apps::guarded("mps_point_source", [&] {
     pm::apps::KokkosSession kokkos(opt);
     pm::io::MpsSceneOptions so;

@@ -151,9 +151,9 @@ int main(int argc, char** argv) {
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
   double velocity = 0, cv = -1;
-  app.add_option("--velocity", velocity, "impact velocity [m/s] (default: the scene's)")->check(CLI::PositiveNumber);
-  app.add_option("--cv", cv, "velocity viscosity coefficient c_v (default: the scene's)")->check(CLI::NonNegativeNumber);
-  CLI11_PARSE(app, argc, argv);
+  pm::apps::positive<double>(app.add_option("--velocity", velocity, "impact velocity [m/s] (default: the scene's)"));
+  pm::apps::non_negative<double>(app.add_option("--cv", cv, "velocity viscosity coefficient c_v (default: the scene's)"));
+  if (const auto rc = pm::apps::parse_command_line(app, "pd_penetration", argc, argv)) return *rc;
   std::string command;
   for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
   return pm::apps::guarded("pd_penetration", [&] {

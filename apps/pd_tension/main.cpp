@@ -97,10 +97,10 @@ int main(int argc, char** argv) {
   bool identify = false;
   double m = 0;
   app.add_flag("--identify-omega-v", identify, "measure omega_v of eq. (3) from the undamped pull without control");
-  app.add_option("--horizon-ratio", m, "m = delta / spacing (default: the scene's)")->check(CLI::Range(1.0, 10.0));
+  pm::apps::within(app.add_option("--horizon-ratio", m, "m = delta / spacing (default: the scene's)"), 1.0, 10.0);
   pm::apps::RestartOptions ropt;
   pm::apps::add_restart_options(app, ropt);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto rc = pm::apps::parse_command_line(app, "pd_tension", argc, argv)) return *rc;
   return pm::apps::guarded("pd_tension", [&] {
     pm::apps::KokkosSession kokkos(opt);
     pm::io::NosbPdSceneOptions so;

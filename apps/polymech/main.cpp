@@ -3,6 +3,9 @@
 // (mps_point_source or mps_harmonics, pd_tension or pd_penetration, helmholtz), next to this binary.
 //   polymech --scene scenes/pd/penetration_303.toml [the app's options ...]
 //   polymech --list
+//   polymech --version
+// The app checks the options; its first line on stderr is then the notice "[polymech] SCENE -> APP"
+// (POLYMECH_DISPATCH_NOTICE, apps/common/cli.hpp), or its one-line error.
 #include <unistd.h>
 
 #include <cerrno>
@@ -30,11 +33,22 @@ int main(int argc, char** argv) {
       }
       return 0;
     }
+    if (a == "--version") {
+      std::printf("%s\n", pm::apps::version_line("polymech").c_str());
+      return 0;
+    }
     if (a == "--scene" && k + 1 < argc) scene = argv[k + 1];
     if (a.rfind("--scene=", 0) == 0) scene = a.substr(8);
   }
   if (scene.empty()) {
     std::fprintf(stderr, "polymech: error: give --scene FILE (polymech --list shows the scene kinds)\n");
+    return 2;
+  }
+  std::error_code ec;
+  const auto st = std::filesystem::status(scene, ec);
+  if (!std::filesystem::exists(st) || std::filesystem::is_directory(st)) {
+    std::fprintf(stderr, "polymech: error: --scene %s: %s\n", pm::apps::cli::shown(scene).c_str(),
+                 std::filesystem::exists(st) ? "is a folder, not a scene file" : "scene file not found");
     return 2;
   }
   std::string app;
@@ -50,7 +64,8 @@ int main(int argc, char** argv) {
   std::vector<char*> args = {const_cast<char*>(exe.c_str())};
   for (int k = 1; k < argc; ++k) args.push_back(argv[k]);
   args.push_back(nullptr);
-  std::fprintf(stderr, "[polymech] %s -> %s\n", scene.c_str(), app.c_str());
+  const std::string notice = "[polymech] " + scene + " -> " + app;
+  setenv("POLYMECH_DISPATCH_NOTICE", notice.c_str(), 1);
   execv(exe.c_str(), args.data());
   std::fprintf(stderr, "polymech: failed: cannot run %s: %s\n", exe.c_str(), std::strerror(errno));
   return 1;
