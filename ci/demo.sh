@@ -35,3 +35,4 @@ fi
 log "demo results in $out/:"
 log "  summary.json (measured vs analytic wave speeds, energy drift, wall time), probes.csv, energy.csv"
 log "  fields.xdmf + fields.h5 (open fields.xdmf in ParaView), snapshots.png, probe_A.png, arrivals.png"
+log "the other apps and the benchmarks (README, 'Apps and scenes'): bash ci/build.sh release"
