@@ -249,7 +249,14 @@ class Isph {
   }
 
   // Host copies for output and tests: positions (n x D), velocities, pressure, density, surface flags.
-  std::vector<double> host_positions() const { return host_vec(f_.x, true); }
+  // x = x0 + u, current: f_.x is refreshed at the start of a step, so between steps (and before the first)
+  // it holds the positions the last step started from.
+  std::vector<double> host_positions() const {
+    std::vector<double> x = host_vec(f_.p.x0, true);
+    const std::vector<double> u = host_vec(f_.p.u, true);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] += u[i];
+    return x;
+  }
   std::vector<double> host_velocities() const { return host_vec(f_.p.v, false); }
   std::vector<double> host_pressure() const { return host_scalar(f_.pressure); }
   std::vector<double> host_density() const { return host_scalar(f_.rho); }
