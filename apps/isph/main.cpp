@@ -87,7 +87,11 @@ int run_case(const pm::io::IsphScene& scene, pm::apps::CommonOptions opt, const 
   mesh.dim = D;
   mesh.points = model.host_positions();
   pm::io::SnapshotWriter snapshots(opt.out, "particles", std::move(mesh));
+  std::int64_t last_snapshot = -1;
   auto snapshot = [&](std::int64_t step) {
+    // the watchdog hands back the last good state, which may be the step just written
+    if (step == last_snapshot) return;
+    last_snapshot = step;
     const auto x = model.host_positions();
     const auto s = model.host_surface();
     std::vector<double> surface(s.begin(), s.end());
