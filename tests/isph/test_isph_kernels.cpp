@@ -264,3 +264,20 @@ TEST(IsphWalls, IntegrationPointReactionsBalanceTheWallForcesOnTheFluid) {
   const double weight = 1000.0 * 9.8 * 0.1 * 0.08;
   EXPECT_NEAR(ff[1], weight, 0.05 * weight);
 }
+
+// The watchdog's range check (issue 33): a particle that moves ten spacings in a step is a state that blew
+// up, even when every value is finite and every solve converged (the draft hydrostatic tank reached 3e28 m/s).
+TEST(IsphHealth, AParticleTenSpacingsPerStepIsOutOfRange) {
+  const double l0 = 0.01, dt = 1e-3, limit = 10 * l0 / dt;
+  ip::Isph<double, 2> m(tank_config(2, l0, 0.1, 0.06, dt));
+  m.step();
+  EXPECT_TRUE(m.health().finite);
+  const auto v = m.fluid().p.v;
+  Kokkos::deep_copy(Kokkos::subview(v, 7, Kokkos::ALL()), 0.99 * limit / std::sqrt(2.0));
+  EXPECT_TRUE(m.health().finite) << m.health().problem;
+  Kokkos::deep_copy(Kokkos::subview(v, 7, Kokkos::ALL()), 1.01 * limit / std::sqrt(2.0));
+  const pm::models::Health h = m.health();
+  EXPECT_FALSE(h.finite);
+  EXPECT_EQ(h.first_bad, 7);
+  EXPECT_NE(h.problem.find("more than ten spacings per step"), std::string::npos) << h.problem;
+}
