@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "efg/efg.hpp"
+#include "fem/gauss_legendre.hpp"
 
 namespace polymech::efg {
 
@@ -117,29 +118,10 @@ inline JResult Efg<T>::j_integral_at(double radius) const {
   return r;
 }
 
-// The 1D Gauss-Legendre rule of the J paths and the band, ascending.
+// The 1D Gauss-Legendre rule of the J paths and the band, ascending (the one rule of the code base).
 template <class T>
 inline void Efg<T>::gauss_rule(int n, std::vector<double>& x, std::vector<double>& w) {
-  // the 1D rule of the layout (a one-cell layout would do; the closed forms suffice for n <= 5)
-  x.clear();
-  w.clear();
-  if (n == 1) {
-    x = {0.0};
-    w = {2.0};
-  } else if (n == 2) {
-    const double a = 1 / std::sqrt(3.0);
-    x = {-a, a};
-    w = {1.0, 1.0};
-  } else if (n == 3) {
-    const double a = std::sqrt(0.6);
-    x = {-a, 0.0, a};
-    w = {5.0 / 9, 8.0 / 9, 5.0 / 9};
-  } else {
-    const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
-    const double wa = (18 + std::sqrt(30.0)) / 36, wb = (18 - std::sqrt(30.0)) / 36;
-    x = {-b, -a, a, b};
-    w = {wb, wa, wa, wb};
-  }
+  fem::gauss_legendre(n, x, w);
 }
 
 // J (and K from it) on the path of `radius`: at_radius(radius) without a band, else the mean of

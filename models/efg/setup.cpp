@@ -4,42 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fem/gauss_legendre.hpp"
+
 namespace polymech::efg {
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-// Gauss-Legendre points and weights on [-1, 1] (Golub-Welsch would do; Newton on P_n is enough here).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.assign(static_cast<std::size_t>(n), 0.0);
-  w.assign(static_cast<std::size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i) {
-    double z = std::cos(pi * (i + 0.75) / (n + 0.5));
-    double dp = 1.0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      const double pn = n == 1 ? z : p1;
-      const double pm = n == 1 ? 1.0 : p0;
-      dp = n * (z * pn - pm) / (z * z - 1.0);
-      const double dz = pn / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-15) break;
-    }
-    if (n == 1) {
-      z = 0.0;
-      dp = 1.0;
-      w[0] = 2.0;
-    }
-    x[static_cast<std::size_t>(i)] = z;
-    if (n > 1) w[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - z * z) * dp * dp);
-  }
-}
 
 // A small deterministic generator for the jitter (splitmix64).
 double uniform(std::uint64_t& s) {
@@ -220,8 +191,10 @@ Layout make_layout(const Config& c) {
     L.crack = {-a, 0.0, a, 0.0};
     L.tip_x = a;
   }
+  // the background cells' c.gauss x c.gauss points and the boundary points, ascending in each direction
+  if (c.gauss < 1) throw std::invalid_argument("efg: gauss must be >= 1");
   std::vector<double> gx, gw;
-  gauss_legendre(c.gauss, gx, gw);
+  fem::gauss_legendre(c.gauss, gx, gw);
   const std::size_t g = gx.size();
   L.quad.reserve((nx - 1) * (ny - 1) * g * g * 3);
   for (std::size_t j = 0; j + 1 < ny; ++j)
