@@ -11,6 +11,7 @@
 // Half-step updates, the rigid part of velocity Verlet (kick - drift - forces - kick):
 //   kick(h):   v += h F / m;   2D: omega += h tau / I;   3D: L += h tau
 //   drift(dt): x += dt v;      2D: theta += dt omega;    3D: q <- exp(dt/2 w) q, w = R I^-1 R^T L
+//   kick_added_mass(h, m_a): kick with the mass m + m_a, the increment rounded as (h F) / m (ISPH)
 // The 3D drift rotates by the exact rotation of the angular velocity at the start of the drift (a unit
 // quaternion stays unit; renormalised against round-off). A body may be translation-only
 // (`rotation_locked`): its orientation stays and torques are ignored.
@@ -66,6 +67,20 @@ struct RigidBody {
     if (rotation_locked) return;
     if constexpr (D == 2)
       spin[0] += h * (torque[0] / inertia[0]);
+    else
+      for (int k = 0; k < 3; ++k) spin[k] += h * torque[k];
+  }
+
+  // The kick of an explicit staggered coupling with an added mass m_a (the ISPH floating body, seed 002
+  // paper 4 eqs. (31)-(32)): v += h F / (m + m_a); 2D: omega += h tau / I; 3D: L += h tau. Each increment
+  // is formed as (h F) / m, as the ISPH model's Euler update always formed it (kick's h (F / m) can differ
+  // in the last bit). The caller's F holds the explicit part m_a a_n of the added-mass term (added_mass 0:
+  // the paper's plain update; m_a stays out of `mass`, so kinetic_energy() is the body's own).
+  KOKKOS_INLINE_FUNCTION void kick_added_mass(double h, double added_mass) {
+    for (int k = 0; k < D; ++k) velocity[k] += h * force[k] / (mass + added_mass);
+    if (rotation_locked) return;
+    if constexpr (D == 2)
+      spin[0] += h * torque[0] / inertia[0];
     else
       for (int k = 0; k < 3; ++k) spin[k] += h * torque[k];
   }
