@@ -9,7 +9,7 @@
 //   |F_t| <= mu F_n (eq. (14)): on slip F_t is scaled to mu F_n and the spring xi to -F_t / S_t.
 //   beta (<= 0) from the restitution e: eq. (17)'s gamma = -zeta m* with zeta = -2 sqrt(5/6) beta sqrt(S / m*);
 //   damping_ratio() is the linear spring's ln e / sqrt(ln^2 e + pi^2), the models use the Hertz-calibrated
-//   dem::hertz_damping_ratio (models/dem/setup.hpp).
+//   contact::hertz_damping_ratio (kernels/contact/damping.hpp).
 // Shared by the DEM (spheres, clumps, FE facets) and the ISPH rigid body against the tank (a disc of unit
 // thickness, docs/METHODS.md).
 //

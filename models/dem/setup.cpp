@@ -23,37 +23,6 @@ std::string TimeStepLimit::describe() const {
   return s + ")";
 }
 
-double hertz_restitution(double beta) {
-  const double c = -2.0 * std::sqrt(5.0 / 6.0) * beta;
-  auto acc = [c](double x, double v) {
-    if (x <= 0) return 0.0;
-    const double f = x * std::sqrt(x) + c * std::sqrt(1.5 * std::sqrt(x)) * v;
-    return f > 0 ? -f : 0.0;
-  };
-  const double h = 1e-3;  // the undamped contact lasts 3.2 time units: 3200 steps
-  double x = 0, v = 1;
-  for (int k = 0; k < 1000000; ++k) {
-    const double k1x = v, k1v = acc(x, v);
-    const double k2x = v + 0.5 * h * k1v, k2v = acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v);
-    const double k3x = v + 0.5 * h * k2v, k3v = acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v);
-    const double k4x = v + h * k3v, k4v = acc(x + h * k3x, v + h * k3v);
-    x += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
-    v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    if (x < 0) return -v;
-  }
-  return 0.0;  // still in contact after 1000 time units: fully damped
-}
-
-double hertz_damping_ratio(double restitution) {
-  if (restitution >= 1.0) return 0.0;
-  double lo = -20.0, hi = 0.0;  // restitution(beta) rises from ~0 at lo to 1 at 0
-  for (int k = 0; k < 60; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (hertz_restitution(mid) < restitution ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 TimeStepLimit time_step_limit(const Config& config) {
   TimeStepLimit t;
   Config with_members;

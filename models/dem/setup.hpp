@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/damping.hpp"
 #include "dem/config.hpp"
 #include "dem/effect_table.hpp"
 
@@ -19,14 +20,10 @@ struct TimeStepLimit {
   std::string describe() const;  // "1.2e-06 s (0.2 x Rayleigh time 6e-06 s; Hertz contact time ...)"
 };
 
-// The damping ratio beta (<= 0) for which the damped Hertz law of kernels/contact/hertz_mindlin.hpp (no
-// attraction) rebounds with the restitution e in (0, 1]. The usual beta = ln e / sqrt(ln^2 e + pi^2) is
-// the linear spring's and gives a larger restitution on a Hertz spring (0.32 for e = 0.2); the law is
-// scale-free (the damping grows as delta^(1/4)), so beta depends on e alone: found by bisection on the
-// dimensionless equation m x'' = -(x^1.5 + c sqrt(1.5 sqrt(x)) x'), m = 1, v0 = 1, c = -2 sqrt(5/6) beta.
-double hertz_damping_ratio(double restitution);
-// The restitution that beta gives on the damped Hertz law (the equation above, RK4).
-double hertz_restitution(double beta);
+// The damping ratio beta (<= 0) for which the damped Hertz law rebounds with the restitution e in (0, 1],
+// and the restitution a beta gives: kernels/contact/damping.hpp (shared with the ISPH body).
+using contact::hertz_damping_ratio;
+using contact::hertz_restitution;
 
 // The clumps of a configuration as member spheres (world frame, after the free spheres in the model) and
 // rigid bodies: mass M = rho V s^3 and principal moments rho I s^5 of the union of the shape's spheres

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dem/setup.hpp"
+#include "contact/damping.hpp"
 
 namespace polymech::isph {
 
@@ -151,7 +151,7 @@ BodyContact body_contact(const Config& c) {
                  ? c.body.contact_modulus
                  : std::sqrt(b.mass * b.mass / (R * b.reference_speed * std::pow(target / 2.87, 5.0)));
   b.contact_time = 2.87 * std::pow(b.mass * b.mass / (R * b.e_star * b.e_star * b.reference_speed), 0.2);
-  b.beta = dem::hertz_damping_ratio(c.body.restitution);
+  b.beta = contact::hertz_damping_ratio(c.body.restitution);
   b.mu = c.body.friction;
   return b;
 }
