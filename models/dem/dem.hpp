@@ -10,9 +10,9 @@
 //   kick (v, omega) + drift -> x = x0 + u, a = g -> broad phase (Verlet skin, history carried)
 //   -> sphere_sphere -> sphere_plane -> [sphere_facet] -> kick.
 // Effects: `friction` (the tangential spring, its history), `damping` (restitution < 1), `fe_surfaces`,
-// `clumps`, `rigid_wheel` (the surface is a wheel, dem/wheel.hpp: set on the bed at WheelSpec::start,
-// then driven: its x velocity and spin prescribed, its height free under the load; the reaction of
-// the spheres on it summed in index order each step).
+// `clumps`, `rigid_wheel` (the surface is a wheel, dem/wheel.hpp, driven by dem/wheel_drive.hpp: set
+// on the bed at WheelSpec::start, then its x velocity and spin prescribed, its height free under the
+// load; the reaction of the spheres on it summed in index order each step).
 // The time step is refused above time_step_limit() (dem/setup.hpp: Rayleigh and Hertz contact time).
 #pragma once
 
@@ -35,6 +35,7 @@
 #include "dem/contact_forces.hpp"
 #include "dem/effect_table.hpp"
 #include "dem/setup.hpp"
+#include "dem/wheel_drive.hpp"
 #include "particles/integrators.hpp"
 #include "rigid/rigid_body.hpp"
 
@@ -42,19 +43,6 @@ namespace polymech::dem {
 
 struct SphereState {  // host copy of one sphere
   double x[3], v[3], omega[3], a[3];
-};
-
-// The wheel of the `rigid_wheel` effect after a step (host), in SI units.
-struct WheelState {
-  bool placed = false;           // set on the bed yet (time >= WheelSpec::start)
-  double time = 0.0;             // since it was set down
-  double centre[3] = {};
-  double sinkage = 0.0;          // rim sinkage: the bed's level under it less its lowest point (R below the centre)
-  double vertical_force = 0.0;   // the gravel's force on it, +z
-  double tractive_force = 0.0;   // the gravel's force on it along the travel, +x (net traction)
-  double driving_torque = 0.0;   // what turns it against the gravel (minus the gravel's moment about +y)
-  double load = 0.0, speed = 0.0, spin = 0.0;  // the schedule's values now
-  double bed_level = 0.0, bed_highest = 0.0;   // under the footprint when it was set down
 };
 
 template <class T = double>
@@ -89,7 +77,10 @@ class Dem {
     if (clumps_) allocate_clumps();
     allocate_planes();
     if (surfaces_) allocate_surface();
-    if (wheel_) allocate_wheel();
+    if (wheel_) {
+      if (!surfaces_) throw std::invalid_argument("dem: effect rigid_wheel needs fe_surfaces (the wheel's mesh)");
+      wheel_drive_ = WheelDrive<T>(cfg_.wheel, mesh_, s_.size());
+    }
     register_state();
   }
 
@@ -101,7 +92,7 @@ class Dem {
     prepared_ = true;
   }
   void advance_first_half() {
-    if (wheel_) wheel_first_half();
+    if (wheel_) wheel_drive_.first_half(step_, cfg_.dt, s_, mesh_);
     const T dt = T(cfg_.dt);
     kick_drift(s_, T(0.5) * dt, dt);
     if (clumps_) {  // the members' own kick and drift above are overwritten by their clump's motion
@@ -135,16 +126,13 @@ class Dem {
     if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt,
-                          wheel_motion(), reaction_);
-      if (wheel_) wheel_loads();
+                          wheel_ ? wheel_drive_.motion(step_, cfg_.dt) : SurfaceMotion<T>(), wheel_drive_.reaction());
+      if (wheel_) wheel_drive_.add_loads(step_, cfg_.dt);
     }
     if (clumps_) clump_loads(s_, clumps_set_, gravity());
   }
   void advance_second_half() {
-    if (wheel_ && wheel_info_(0) > 0) {  // eq. of the wheel's height: m z'' = F_z (gravel + load)
-      auto& b = wheel_body_(0);
-      b.velocity[2] += 0.5 * cfg_.dt * b.force[2] / b.mass;
-    }
+    if (wheel_) wheel_drive_.second_half(cfg_.dt);  // the wheel's height: m z'' = F_z (gravel + load)
     const T h = T(0.5) * T(cfg_.dt);
     kick(s_, h);
     if (clumps_) {
@@ -181,28 +169,9 @@ class Dem {
   }
 
   // The wheel (effect rigid_wheel) after the last step.
-  WheelState wheel() const {
-    WheelState w;
-    if (!wheel_) return w;
-    const auto& spec = cfg_.wheel;
-    const auto& b = wheel_body_(0);
-    w.placed = wheel_info_(0) > 0;
-    w.time = w.placed ? time() - wheel_info_(1) : 0.0;
-    for (int k = 0; k < 3; ++k) w.centre[k] = b.position[k];
-    w.bed_level = wheel_info_(2);
-    w.bed_highest = wheel_info_(3);
-    if (!w.placed) return w;
-    w.sinkage = w.bed_level - (b.position[2] - spec.radius);
-    w.vertical_force = contact_[2];
-    w.tractive_force = contact_[0];
-    w.driving_torque = -contact_[4];
-    w.load = spec.load_at(w.time);
-    w.speed = spec.speed_at(w.time);
-    w.spin = spec.spin_at(w.time);
-    return w;
-  }
+  WheelState wheel() const { return wheel_ ? wheel_drive_.state(step_, cfg_.dt) : WheelState(); }
   // The spheres' total force on the wheel and its moment about the wheel's centre (last step).
-  std::array<double, 6> wheel_contact() const { return contact_; }
+  std::array<double, 6> wheel_contact() const { return wheel_drive_.contact(); }
 
   models::Health health() const { return models::particle_health<T, 3>(s_); }
   const models::StateRegistry& state() const { return state_; }
@@ -405,90 +374,6 @@ class Dem {
     facet_pairs_ = Pairs(T(max_radius(cfg_, clump_init_)) + contact::max_facet_radius(mesh_), T(skin(cfg_, clump_init_)), neighbors::ListKind::full,
                          "polymech::dem::facet_pairs", friction_);
   }
-  void allocate_wheel() {
-    if (!surfaces_) throw std::invalid_argument("dem: effect rigid_wheel needs fe_surfaces (the wheel's mesh)");
-    const auto& w = cfg_.wheel;
-    if (!w.enabled() || !(w.mass > 0) || !(w.slip >= 0 && w.slip < 1))
-      throw std::invalid_argument("dem: the wheel needs radius > 0, mass > 0 and slip in [0, 1)");
-    wheel_body_ = decltype(wheel_body_)("polymech::dem::wheel", 1);
-    wheel_info_ = decltype(wheel_info_)("polymech::dem::wheel_info", 4);  // placed, time placed, bed level, highest
-    auto& b = wheel_body_(0);
-    b.mass = w.mass;
-    for (int k = 0; k < 3; ++k) {
-      b.inertia[k] = 1.0;  // the spin is prescribed: with unit inertia the angular momentum is the angular velocity
-      b.position[k] = w.parked[k];
-    }
-    wheel_reference_ = VecView<T, 3>("polymech::dem::wheel_reference", mesh_.node_count());
-    Kokkos::deep_copy(wheel_reference_, mesh_.nodes);  // the scene's nodes are relative to the centre
-    reaction_ = WrenchView<T>("polymech::dem::wheel_reaction", s_.size());
-    place_wheel_mesh();
-  }
-  void place_wheel_mesh() {
-    const auto& b = wheel_body_(0);
-    contact::place_rigid(mesh_, wheel_reference_, b.position, b.orientation);
-  }
-  SurfaceMotion<T> wheel_motion() const {
-    SurfaceMotion<T> m;
-    if (!wheel_ || !(wheel_info_(0) > 0)) return m;
-    const auto& b = wheel_body_(0);
-    const double t = time() + cfg_.dt - wheel_info_(1);  // the forces are those at the end of the step
-    for (int k = 0; k < 3; ++k) m.centre[k] = T(b.position[k]);
-    m.velocity[0] = T(cfg_.wheel.speed_at(t));
-    m.velocity[2] = T(b.velocity[2]);  // the half-step velocity, as the spheres' in velocity Verlet
-    m.omega[1] = T(cfg_.wheel.spin_at(t));
-    return m;
-  }
-  // Sets the wheel on the bed at WheelSpec::start: its lowest point on the highest sphere under its
-  // footprint (dem/wheel.hpp bed_level), at rest; then, each step, the schedule drives it.
-  void wheel_first_half() {
-    const auto& spec = cfg_.wheel;
-    auto& b = wheel_body_(0);
-    if (!(wheel_info_(0) > 0)) {
-      if (time() + 0.5 * cfg_.dt < spec.start) return;
-      auto x0 = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.x0);
-      auto u = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.u);
-      auto r = Kokkos::create_mirror_view_and_copy(HostSpace(), s_.radius);
-      std::vector<std::array<double, 4>> rows(static_cast<std::size_t>(s_.size()));
-      double r_max = 0;
-      for (std::size_t i = 0; i < rows.size(); ++i) {
-        rows[i] = {double(x0(i, 0) + u(i, 0)), double(x0(i, 1) + u(i, 1)), double(x0(i, 2) + u(i, 2)), double(r(i))};
-        r_max = std::max(r_max, rows[i][3]);
-      }
-      const BedLevel level = bed_level(rows, spec, r_max);
-      b = rigid::RigidBody<3>();
-      b.mass = spec.mass;
-      for (int k = 0; k < 3; ++k) b.inertia[k] = 1.0;
-      b.position[0] = spec.x_start;
-      b.position[1] = spec.y_centre;
-      b.position[2] = level.highest + spec.radius;
-      wheel_info_(0) = 1.0;
-      wheel_info_(1) = time();
-      wheel_info_(2) = level.mean;
-      wheel_info_(3) = level.highest;
-    }
-    const double h = 0.5 * cfg_.dt, t = time() - wheel_info_(1);
-    b.velocity[2] += h * b.force[2] / b.mass;
-    b.velocity[0] = spec.speed_at(t + h);  // prescribed at mid-step: the drift is exact for a ramp
-    b.velocity[1] = 0.0;
-    b.spin[0] = b.spin[2] = 0.0;
-    b.spin[1] = spec.spin_at(t + h);
-    b.drift(cfg_.dt);
-    place_wheel_mesh();
-  }
-  // The wheel's loads: the spheres' reaction summed in index order (thread-count independent) and the
-  // vertical load of the schedule (the wheel carries no weight of its own: the load is all of it).
-  void wheel_loads() {
-    const auto sum = wrench_sum(reaction_, reaction_partials_);
-    for (int k = 0; k < 6; ++k) contact_[static_cast<std::size_t>(k)] = sum[k];
-    auto& b = wheel_body_(0);
-    const bool placed = wheel_info_(0) > 0;
-    const double load = placed ? cfg_.wheel.load_at(time() + cfg_.dt - wheel_info_(1)) : 0.0;
-    for (int k = 0; k < 3; ++k) {
-      b.force[k] = contact_[static_cast<std::size_t>(k)];
-      b.torque[k] = contact_[static_cast<std::size_t>(3 + k)];
-    }
-    b.force[2] -= load;
-  }
   void register_state() {
     state_.add("u", s_.u);
     state_.add("v", s_.v);
@@ -498,8 +383,7 @@ class Dem {
     state_.add("plane_history", plane_history_);
     state_.add("planes", planes_);
     state_.add("clump_bodies", clumps_set_.bodies);
-    state_.add("wheel", wheel_body_);
-    state_.add("wheel_info", wheel_info_);
+    wheel_drive_.register_state(state_);  // "wheel", "wheel_info" (nothing without the wheel)
     // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
     // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md), a
     // checkpoint writes them with the lists (save()).
@@ -521,12 +405,7 @@ class Dem {
   PlaneView<T> planes_;
   SpringView<T> plane_history_;
   contact::SurfaceMesh<T> mesh_;
-  Kokkos::View<rigid::RigidBody<3>*, HostSpace> wheel_body_;  // the wheel (rigid_wheel): one body
-  Kokkos::View<double*, HostSpace> wheel_info_;                // placed, time placed, bed level, highest
-  VecView<T, 3> wheel_reference_;                              // its nodes relative to its centre
-  WrenchView<T> reaction_;                                     // per sphere: what it gives the wheel
-  particles::SumPartials reaction_partials_;                   // the chunk table of its sum (kept across steps)
-  std::array<double, 6> contact_{};                            // their sum (last step)
+  WheelDrive<T> wheel_drive_;  // the wheel (rigid_wheel; dem/wheel_drive.hpp)
   models::StateRegistry state_;
   std::int64_t step_ = 0;
   bool prepared_ = false;
