@@ -85,7 +85,7 @@ namespace detail {
 template <class Pass, class = void>
 struct has_initial : std::false_type {};
 template <class Pass>
-struct has_initial<Pass, std::void_t<decltype(std::declval<const Pass&>().initial(Index()))>> : std::true_type {};
+struct has_initial<Pass, std::void_t<decltype(std::declval<const Pass&>().initial(std::declval<Index>()))>> : std::true_type {};
 }  // namespace detail
 
 // Every ISPH operator is a sum over a row of a neighbour list whose partial sums add. `Pass` is the
