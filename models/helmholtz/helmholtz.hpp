@@ -13,6 +13,10 @@
 //   impedance  impedance boundaries, eqs. (7), (19)
 //   vibrating  vibrating boundaries, eqs. (8), (20)
 // Rigid boundaries (dPhi/dn = 0) are natural and cost nothing.
+//
+// The class and its constructor, in named steps, are here; the parts: element_data.hpp (chunks, colours,
+// element DoFs, geometry), boundary.hpp (Dirichlet, impedance and vibrating faces), operator.hpp (the
+// matrix-free operator of eq. (16)), solve.hpp (right-hand side, COCG, results), preconditioners.hpp.
 #pragma once
 
 #include <algorithm>
@@ -25,10 +29,12 @@
 #include "common/host_copy.hpp"
 #include "fem/l2_error.hpp"
 #include "helmholtz/analytic.hpp"
+#include "helmholtz/boundary.hpp"
 #include "helmholtz/config.hpp"
 #include "helmholtz/distribute.hpp"
 #include "helmholtz/effect_table.hpp"
 #include "helmholtz/dofs.hpp"
+#include "helmholtz/element_data.hpp"
 #include "helmholtz/operator.hpp"
 #include "helmholtz/parallel.hpp"
 #include "solvers/krylov.hpp"
@@ -40,52 +46,6 @@ class Helmholtz;
 #include "helmholtz/preconditioners.hpp"
 
 namespace polymech::helmholtz {
-
-using CoordinateView = Kokkos::View<double* [3], Kokkos::LayoutRight, MemSpace>;
-
-namespace detail {
-
-// Kernels of the model, as free functions (CUDA: no extended lambdas in constructors or private members).
-
-inline void dirichlet_data(const View1<Index>& constrained, const CoordinateView& x, const AnalyticField& field,
-                           double constant, bool analytic, const View1<Kokkos::complex<double>>& g) {
-  Kokkos::parallel_for(
-      "polymech::helmholtz::dirichlet_data", range(static_cast<Index>(constrained.extent(0))),
-      KOKKOS_LAMBDA(const Index k) {
-        const Index d = constrained(k);
-        g(k) = analytic ? field(x(d, 0), x(d, 1), x(d, 2)) : Kokkos::complex<double>(constant, 0.0);
-      });
-}
-
-template <class T>
-void to_precision(const View1<Kokkos::complex<double>>& from, const View1<Kokkos::complex<T>>& to) {
-  Kokkos::parallel_for(
-      "polymech::helmholtz::to_precision", range(static_cast<Index>(from.extent(0))),
-      KOKKOS_LAMBDA(const Index i) { to(i) = Kokkos::complex<T>(static_cast<T>(from(i).real()), static_cast<T>(from(i).imag())); });
-}
-
-template <class T>
-void to_double(const View1<Kokkos::complex<T>>& from, const View1<Kokkos::complex<double>>& to) {
-  Kokkos::parallel_for(
-      "polymech::helmholtz::to_double", range(static_cast<Index>(from.extent(0))), KOKKOS_LAMBDA(const Index i) {
-        to(i) = Kokkos::complex<double>(static_cast<double>(from(i).real()), static_cast<double>(from(i).imag()));
-      });
-}
-
-template <class V>
-void subtract(const View1<V>& a, const View1<V>& b) {  // a -= b
-  Kokkos::parallel_for(
-      "polymech::helmholtz::lift_rhs", range(static_cast<Index>(a.extent(0))), KOKKOS_LAMBDA(const Index i) { a(i) -= b(i); });
-}
-
-}  // namespace detail
-
-// Faces of one boundary kind, as the model sets them up (host description, also used by the assembled
-// reference): the boundary faces and one coefficient per face.
-struct FaceTerm {
-  std::vector<BoundaryFace> faces;
-  std::vector<std::complex<double>> coefficient;
-};
 
 template <class T>
 class Helmholtz {
@@ -120,14 +80,7 @@ class Helmholtz {
   }
 
   // Description of the discrete problem for the assembled reference (assembled.hpp).
-  FaceTerm face_term(BoundaryKind kind) const {
-    FaceTerm t;
-    for (const auto& f : faces_of(kind)) {
-      t.faces.push_back(f);
-      t.coefficient.push_back(face_coefficient(kind, f.boundary));
-    }
-    return t;
-  }
+  FaceTerm face_term(BoundaryKind kind) const { return helmholtz::face_term(cfg_, kind); }
   std::vector<char> constrained_mask() const;
 
   const Config& config() const { return cfg_; }
@@ -199,41 +152,13 @@ class Helmholtz {
     }
   }
 
-  std::complex<double> face_coefficient(BoundaryKind kind, int boundary) const {
-    for (const auto& b : cfg_.boundaries)
-      if (b.kind == kind && cfg_.mesh.boundary_index(b.name) == boundary) {
-        if (kind == BoundaryKind::impedance) return {0.0, cfg_.density * cfg_.omega() / b.impedance};  // j rho omega / Zn
-        if (kind == BoundaryKind::vibrating) return {b.velocity, 0.0};                                // eq. (20)
-      }
-    return {0.0, 0.0};
-  }
+  // The steps of the constructor.
+  void number_global_dofs(const std::vector<std::int64_t>& traversal);
+  void set_up_elements(const std::vector<char>& constrained);
+  fem::HexFaces<T, C> set_up_boundaries(const std::vector<char>& constrained);
+  void set_up_operator(const fem::HexFaces<T, C>& impedance);
 
-  std::vector<BoundaryFace> faces_of(BoundaryKind kind) const {
-    std::vector<BoundaryFace> out;
-    for (const auto& b : cfg_.boundaries) {
-      if (b.kind != kind) continue;
-      const int id = cfg_.mesh.boundary_index(b.name);
-      for (const auto& f : cfg_.mesh.boundary_faces)
-        if (f.boundary == id) out.push_back(f);
-    }
-    return out;
-  }
-
-  fem::HexFaces<T, C> build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name);
-
-  // Elements per chunk. On a device, one (every element its own thread). On the host about 8000 element
-  // nodes, so that a thread reuses the DoFs its chunk's elements share while they are in cache (1M DoFs,
-  // one thread: p = 2 1.5x, p = 3 1.4x, p = 4 1.4x faster than one element per chunk; p = 1 the same;
-  // docs/PERFORMANCE.md), but at least 64 chunks per thread so that the colours still balance.
-  // A multiple of the batch size, so that only the last batch of a chunk can be partial.
-  static std::int64_t chunk_size(const Config& c, int batch) {
-    if (c.chunk_elements > 0) return c.chunk_elements;
-    if (!Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible) return batch;
-    const std::int64_t n = c.order + 1;
-    const std::int64_t balance = c.mesh.element_count() / (64 * std::max(1, kx::concurrency<ExecSpace>()));
-    const std::int64_t size = std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), balance));
-    return (size + batch - 1) / batch * batch;
-  }
+  View1<C> jacobi_inverse_diagonal() const;  // solve.hpp
 
   std::string where(Index local_dof) const {  // coordinates of a local DoF
     if (local_dof < 0 || local_dof >= static_cast<Index>(layout_.global_of_local.size())) return "";
@@ -264,308 +189,81 @@ class Helmholtz {
 // Member functions that launch kernels are defined out of the class (not inline), so the explicit
 // instantiation declarations below keep every other translation unit from instantiating them.
 
+// The model of one rank's part, eq. (16) ready to solve: the global DoF numbering, the part, its
+// Dirichlet mask, elements and geometry, boundary faces and the operator.
 template <class T>
 Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
   const auto t0 = std::chrono::steady_clock::now();
   validate(c);
   field_ = AnalyticField::from(c);
   const std::vector<std::int64_t> traversal = locality_order(c.mesh);
-  dofs_ = number_dofs(c.mesh, c.order, traversal);
-  if (c.node_perturbation > 0) {
-    const auto ext = exterior_faces(c.mesh);
-    perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), c.node_perturbation, mean_element_size() / c.order);
-  }
-  const int N3 = dofs_.nodes_per_element();
-
+  number_global_dofs(traversal);
   // this rank's part: its elements, local DoFs (owned, then ghosts) and halo (distribute.hpp)
   comm_ = c.communicator ? c.communicator : std::make_shared<SerialCommunicator>();
   layout_ = make_part_layout(c.mesh, dofs_, traversal, comm_->rank(), comm_->size(), c.partition);
-  const Index n = static_cast<Index>(layout_.global_of_local.size());
-  const auto& local = layout_.local_of_global;
-
-  // Dirichlet DoFs (global mask, then local)
-  std::vector<char> constrained_global(static_cast<std::size_t>(dofs_.count), 0);
-  if (c.effects.has("dirichlet")) constrained_global = dofs_on_faces(dofs_, faces_of(BoundaryKind::dirichlet));
-  std::vector<char> constrained(static_cast<std::size_t>(n), 0);
-  for (Index i = 0; i < n; ++i) constrained[i] = constrained_global[layout_.global_of_local[i]];
-  auto encode = [&](std::int32_t global) {
-    const std::int32_t d = local[global];
-    return constrained[d] ? fem::constrained_dof(d) : d;
-  };
-
-  // elements in chunks of neighbours (the locality order), the chunks grouped by colour
-  const std::vector<std::int64_t>& elements = layout_.elements;
-  const std::int64_t ne = static_cast<std::int64_t>(elements.size());
-  const int batch = c.batch_elements > 0 ? c.batch_elements : fem::volume_batch<T>();
-  const std::int64_t per_chunk = chunk_size(c, batch);
-  const std::int64_t nchunks = (ne + per_chunk - 1) / per_chunk;
-  std::vector<std::int64_t> chunk_vertex_offsets(1, 0), chunk_vertices;
-  for (std::int64_t k = 0; k < nchunks; ++k) {
-    const std::size_t first = chunk_vertices.size();
-    for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t)
-      for (int v = 0; v < 8; ++v) chunk_vertices.push_back(c.mesh.hexes[8 * elements[t] + v]);
-    std::sort(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end());
-    chunk_vertices.erase(std::unique(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end()),
-                         chunk_vertices.end());
-    chunk_vertex_offsets.push_back(static_cast<std::int64_t>(chunk_vertices.size()));
-  }
-  std::vector<std::int64_t> chunk_order;
-  std::vector<std::int32_t> offsets;
-  sort_by_color(color_by_shared_vertices(chunk_vertex_offsets, chunk_vertices, c.mesh.vertex_count()), chunk_order,
-                offsets);
-  std::vector<Index> chunk_start(1, 0);
-  for (const std::int64_t k : chunk_order) {
-    for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t)
-      element_order_.push_back(elements[t]);
-    chunk_start.push_back(static_cast<Index>(element_order_.size()));
-  }
-  el_.order = c.order;
-  el_.batch = batch;
-  el_.owned = layout_.owned;
-  el_.ghost = n - layout_.owned;
-  el_.color_offsets.assign(offsets.begin(), offsets.end());
-  el_.chunk_offsets = models::to_device<Index>("polymech::helmholtz::chunk_offsets", chunk_start);
-  el_.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::element_dofs",
-                                                                   element_order_.size(), N3);
-  {
-    auto h = Kokkos::create_mirror_view(el_.dofs);
-    for (std::size_t s = 0; s < element_order_.size(); ++s)
-      for (int a = 0; a < N3; ++a) h(s, a) = encode(dofs_.element_dofs[element_order_[s] * N3 + a]);
-    Kokkos::deep_copy(el_.dofs, h);
-  }
-  x_ = CoordinateView("polymech::helmholtz::coordinates", n);
-  {
-    auto h = Kokkos::create_mirror_view(x_);
-    for (Index i = 0; i < n; ++i)
-      for (int k = 0; k < 3; ++k) h(i, k) = dofs_.coordinates[3 * static_cast<std::size_t>(layout_.global_of_local[i]) + k];
-    Kokkos::deep_copy(x_, h);
-  }
-  jacobian_ = fem::compute_geometry(el_, x_, c.affine_geometry);
-  {  // the worst element over all parts (a part without the worst reports +1e300)
-    double w[2] = {-jacobian_.min_ratio, static_cast<double>(comm_->rank())};
-    comm_->max(w, 1);
-    if (-w[0] < jacobian_.min_ratio) jacobian_.element = -1;  // another part holds it
-    jacobian_.min_ratio = -w[0];
-  }
-  // the elements each part counts in integrals (eq. (28)): its own, not the overlap
-  {
-    std::vector<std::int64_t> counted;
-    for (const auto e : element_order_)
-      if (layout_.counts(e)) counted.push_back(e);
-    error_dofs_ = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>("polymech::helmholtz::error_dofs", counted.size(), N3);
-    auto h = Kokkos::create_mirror_view(error_dofs_);
-    for (std::size_t s = 0; s < counted.size(); ++s)
-      for (int a = 0; a < N3; ++a) h(s, a) = local[dofs_.element_dofs[counted[s] * N3 + a]];
-    Kokkos::deep_copy(error_dofs_, h);
-  }
-  if (!(jacobian_.min_ratio > 0.0))
-    throw std::invalid_argument(
-        "helmholtz: " +
-        (jacobian_.element >= 0 ? c.mesh.describe_element(element_order_[jacobian_.element]) : std::string("an element")) +
-        " is inverted or too distorted: det J / (volume / 8) = " + models::format_g(jacobian_.min_ratio) +
-        " at a node or quadrature point of the order-" + std::to_string(c.order) +
-        " map (allowed: > 0 everywhere); check the vertex order (Gmsh hexahedron numbering) and the distortion");
-
-  // boundary faces of the enabled effects
-  fem::HexFaces<T, C> impedance;
-  if (c.effects.has("impedance")) impedance = build_faces(BoundaryKind::impedance, constrained, "impedance");
-  if (c.effects.has("vibrating")) vibrating_ = build_faces(BoundaryKind::vibrating, constrained, "vibrating");
-
-  // constrained DoFs and their values
-  if (c.effects.has("dirichlet")) {
-    std::vector<Index> list;
-    for (Index i = 0; i < n; ++i)
-      if (constrained[i]) list.push_back(i);
-    constrained_ = models::to_device<Index>("polymech::helmholtz::dirichlet_dofs", list);
-    double value = 0.0;
-    for (const auto& b : c.boundaries)
-      if (b.kind == BoundaryKind::dirichlet) value = b.value;
-    View1<Kokkos::complex<double>> g("polymech::helmholtz::dirichlet_values_double", list.size());
-    detail::dirichlet_data(constrained_, x_, field_, value, field_.kind != AnalyticKind::none, g);
-    dirichlet_values_ = View1<C>("polymech::helmholtz::dirichlet_values", list.size());
-    detail::to_precision(g, dirichlet_values_);
-  }
-  const double k = c.wavenumber();
-  op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
-  if (comm_->size() > 1)
-    op_.distribute(std::make_shared<Halo<C>>(comm_, layout_.neighbours, layout_.send, layout_.recv), comm_);
-  solution_ = View1<C>("polymech::helmholtz::solution", n);
+  const std::vector<char> constrained = constrained_mask_of_part(c, dofs_, layout_);  // Dirichlet DoFs, local
+  set_up_elements(constrained);
+  const fem::HexFaces<T, C> impedance = set_up_boundaries(constrained);
+  set_up_operator(impedance);
   Kokkos::fence();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Every DoF of the mesh (every rank numbers them all), in the locality order; with
+// Config::node_perturbation, the interior nodes moved at random (a fraction of h / p).
 template <class T>
-void Helmholtz<T>::right_hand_side(const View1<C>& rhs, const View1<C>& x0) const {
-  Kokkos::deep_copy(rhs, C(0));
-  Kokkos::deep_copy(x0, C(0));
-  if (vibrating_.faces() > 0) fem::add_face_load(vibrating_, rhs);
-  if (constrained_.extent(0) > 0) {
-    fem::set_constrained_values(constrained_, dirichlet_values_, x0);
-    View1<C> lift("polymech::helmholtz::dirichlet_lift", rhs.extent(0));
-    op_.apply_unconstrained(x0, lift);
-    detail::subtract(rhs, lift);
-    fem::set_constrained_values(constrained_, dirichlet_values_, rhs);
+void Helmholtz<T>::number_global_dofs(const std::vector<std::int64_t>& traversal) {
+  dofs_ = number_dofs(cfg_.mesh, cfg_.order, traversal);
+  if (cfg_.node_perturbation > 0) {
+    const auto ext = exterior_faces(cfg_.mesh);
+    perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), cfg_.node_perturbation, mean_element_size() / cfg_.order);
   }
 }
 
+// The part's elements in coloured chunks, their DoFs, the DoF coordinates and the geometry (element_data.hpp).
 template <class T>
-solvers::SolveResult Helmholtz<T>::solve(const solvers::SolverOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const Index n = op_.local_size();
-  View1<C> rhs("polymech::helmholtz::rhs", n);
-  right_hand_side(rhs, solution_);
-  View1<C> inv;
-  if (cfg_.preconditioner == Preconditioner::chebyshev || cfg_.preconditioner == Preconditioner::pmg) {
-    const auto tp = std::chrono::steady_clock::now();
-    if (cfg_.preconditioner == Preconditioner::chebyshev) {
-      const ChebyshevPreconditioner<T> P(*this, cfg_.shifted);
-      preconditioner_ = P.describe();
-      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
-      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
-    } else {
-      if (comm_->size() > 1)
-        throw std::invalid_argument("helmholtz: preconditioner 'pmg' runs on one part only (its transfers have no halo "
-                                    "exchange); allowed with " + std::to_string(comm_->size()) + " ranks: jacobi, "
-                                    "chebyshev, none");
-      const PMultigrid<T> P(*this, cfg_.shifted);
-      preconditioner_ = P.describe();
-      preconditioner_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - tp).count();
-      result_ = solvers::cocg_preconditioned(op_, P, rhs, solution_, options);
-    }
-    Kokkos::fence();
-    solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return result_;
-  }
-  if (cfg_.preconditioner == Preconditioner::jacobi) {
-    View1<C> diag("polymech::helmholtz::diagonal", n);
-    op_.diagonal(diag);
-    inv = View1<C>("polymech::helmholtz::inverse_diagonal", n);
-    auto s = solvers::jacobi_inverse(op_.owned_size(), n, diag, inv);
-    {  // over all parts
-      double v[3] = {-s.min_abs, s.max_abs, static_cast<double>(s.non_finite)};
-      comm_->max(v, 2);
-      comm_->sum(v + 2, 1);
-      if (-v[0] < s.min_abs) s.argmin = -1;
-      s.min_abs = -v[0];
-      s.max_abs = v[1];
-      s.non_finite = static_cast<Index>(v[2]);
-    }
-    if (s.non_finite > 0 || !(s.min_abs > 1e-12 * s.max_abs))
-      throw std::runtime_error("helmholtz: the operator diagonal " +
-                               (s.non_finite > 0 ? std::string("is not finite")
-                                                 : "vanishes (|d| = " + models::format_g(s.min_abs) + " vs max " +
-                                                       models::format_g(s.max_abs) + ") at DoF " +
-                                                       std::to_string(s.argmin) + " " + where(s.argmin)) +
-                               ": Jacobi preconditioning is impossible at this k h; refine the mesh or set "
-                               "solver.preconditioner = \"none\"");
-  }
-  result_ = solvers::cocg(op_, inv, rhs, solution_, options);
-  Kokkos::fence();
-  solve_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return result_;
+void Helmholtz<T>::set_up_elements(const std::vector<char>& constrained) {
+  ElementData<T> d = element_data<T>(cfg_, dofs_, layout_, constrained, *comm_);
+  element_order_ = std::move(d.order);
+  el_ = d.el;
+  x_ = d.x;
+  jacobian_ = d.jacobian;
+  error_dofs_ = d.error_dofs;
 }
 
+// The boundary faces of the enabled effects and the Dirichlet values (boundary.hpp); returns the
+// impedance faces, which the operator keeps.
 template <class T>
-double Helmholtz<T>::apply_rate(int applies) const {
-  const Index n = op_.local_size();
-  View1<C> x("polymech::helmholtz::rate_x", n), y("polymech::helmholtz::rate_y", n);
-  Kokkos::deep_copy(x, C(1));
-  op_.apply(x, y);
-  Kokkos::fence();
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int k = 0; k < applies; ++k) op_.apply(x, y);
-  Kokkos::fence();
-  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  comm_->max(&s, 1);  // the slowest part
-  return s > 0 ? static_cast<double>(dofs_.count) * applies / s : 0.0;
-}
-
-template <class T>
-fem::ErrorIntegrals Helmholtz<T>::l2_error() const {
-  if (field_.kind == AnalyticKind::none) throw std::invalid_argument("helmholtz: this case has no analytic field");
-  if (op_.halo()) op_.halo()->update(solution_);  // the ghosts of the elements this part integrates
-  View1<Kokkos::complex<double>> u("polymech::helmholtz::solution_double", solution_.extent(0));
-  detail::to_double(solution_, u);
-  fem::ErrorIntegrals e = fem::l2_error(cfg_.order, error_dofs_, x_, u, field_);
-  double v[3] = {e.error2, e.reference2, e.volume};
-  comm_->sum(v, 3);
-  return {v[0], v[1], v[2]};
-}
-
-template <class T>
-std::vector<std::complex<double>> Helmholtz<T>::host_solution() const {
-  auto m = Kokkos::create_mirror_view_and_copy(HostSpace(), solution_);
-  if (comm_->size() == 1) {
-    std::vector<std::complex<double>> out(m.extent(0));
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {static_cast<double>(m(i).real()), static_cast<double>(m(i).imag())};
-    return out;
+auto Helmholtz<T>::set_up_boundaries(const std::vector<char>& constrained) -> fem::HexFaces<T, C> {
+  fem::HexFaces<T, C> impedance;
+  if (cfg_.effects.has("impedance"))
+    impedance = boundary_faces<T>(cfg_, dofs_, layout_, x_, BoundaryKind::impedance, constrained, "impedance");
+  if (cfg_.effects.has("vibrating"))
+    vibrating_ = boundary_faces<T>(cfg_, dofs_, layout_, x_, BoundaryKind::vibrating, constrained, "vibrating");
+  if (cfg_.effects.has("dirichlet")) {
+    const DirichletValues<T> d = dirichlet_values<T>(cfg_, field_, x_, constrained);
+    constrained_ = d.dofs;
+    dirichlet_values_ = d.values;
   }
-  // owned values with their global indices, gathered on rank 0
-  std::vector<double> mine;
-  mine.reserve(3 * static_cast<std::size_t>(layout_.owned));
-  for (Index i = 0; i < layout_.owned; ++i)
-    mine.insert(mine.end(), {static_cast<double>(layout_.global_of_local[i]), static_cast<double>(m(i).real()),
-                             static_cast<double>(m(i).imag())});
-  const std::vector<double> all = comm_->gather(mine);
-  std::vector<std::complex<double>> out(comm_->rank() == 0 ? static_cast<std::size_t>(dofs_.count) : 0);
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3) out[static_cast<std::size_t>(all[k])] = {all[k + 1], all[k + 2]};
-  return out;
+  return impedance;
 }
 
+// The operator K = A - k^2 M + j rho omega C of eq. (16) (operator.hpp), its halo on several ranks.
 template <class T>
-std::vector<char> Helmholtz<T>::constrained_mask() const {
-  std::vector<char> mask(static_cast<std::size_t>(dofs_.count), 0);
-  auto h = Kokkos::create_mirror_view_and_copy(HostSpace(), constrained_);
-  for (std::size_t k = 0; k < h.extent(0); ++k) mask[layout_.global_of_local[h(k)]] = 1;
-  return mask;
+void Helmholtz<T>::set_up_operator(const fem::HexFaces<T, C>& impedance) {
+  const double k = cfg_.wavenumber();
+  op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
+  if (comm_->size() > 1)
+    op_.distribute(std::make_shared<Halo<C>>(comm_, layout_.neighbours, layout_.send, layout_.recv), comm_);
+  solution_ = View1<C>("polymech::helmholtz::solution", static_cast<Index>(layout_.global_of_local.size()));
 }
 
-template <class T>
-auto Helmholtz<T>::build_faces(BoundaryKind kind, const std::vector<char>& constrained, const std::string& name)
-    -> fem::HexFaces<T, C> {
-  FaceTerm term;  // this part's faces: those of its elements
-  {
-    const FaceTerm all = face_term(kind);
-    std::vector<char> here(static_cast<std::size_t>(cfg_.mesh.element_count()), 0);
-    for (const auto e : layout_.elements) here[e] = 1;
-    for (std::size_t i = 0; i < all.faces.size(); ++i)
-      if (here[all.faces[i].element]) {
-        term.faces.push_back(all.faces[i]);
-        term.coefficient.push_back(all.coefficient[i]);
-      }
-  }
-  const int N = dofs_.n1d, N3 = dofs_.nodes_per_element();
-  std::vector<std::int64_t> verts;
-  for (const auto& f : term.faces)
-    for (int v : hex_face_vertices(f.face)) verts.push_back(cfg_.mesh.hexes[8 * f.element + v]);
-  std::vector<std::int64_t> order;
-  std::vector<std::int32_t> offsets;
-  sort_by_color(color_by_shared_vertices(verts, 4, cfg_.mesh.vertex_count()), order, offsets);
-  fem::HexFaces<T, C> f;
-  f.order = cfg_.order;
-  f.color_offsets.assign(offsets.begin(), offsets.end());
-  const std::string prefix = "polymech::helmholtz::" + name;
-  f.dofs = Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace>(prefix + "_face_dofs", order.size(), N * N);
-  f.coefficient = View1<C>(prefix + "_face_coefficients", order.size());
-  auto hd = Kokkos::create_mirror_view(f.dofs);
-  auto hc = Kokkos::create_mirror_view(f.coefficient);
-  for (std::size_t s = 0; s < order.size(); ++s) {
-    const BoundaryFace& bf = term.faces[order[s]];
-    const auto nodes = face_local_nodes(N, bf.face);
-    for (int a = 0; a < N * N; ++a) {
-      const std::int32_t d = layout_.local_of_global[dofs_.element_dofs[bf.element * N3 + nodes[a]]];
-      hd(s, a) = constrained[d] ? fem::constrained_dof(d) : d;
-    }
-    const auto cf = term.coefficient[order[s]];
-    hc(s) = C(static_cast<T>(cf.real()), static_cast<T>(cf.imag()));
-  }
-  Kokkos::deep_copy(f.dofs, hd);
-  Kokkos::deep_copy(f.coefficient, hc);
-  const double ratio = fem::compute_face_weights(f, x_, prefix + "_face_weights");
-  if (!(ratio > 0.0))
-    throw std::invalid_argument("helmholtz: a " + name + " boundary face is degenerate (zero area at a point)");
-  return f;
-}
+// Solving and the results: solve.hpp.
+}  // namespace polymech::helmholtz
+
+#include "helmholtz/solve.hpp"
+
+namespace polymech::helmholtz {
 
 // Compiled once, in models/helmholtz/helmholtz.cpp (library polymech_helmholtz): the kernels of four
 // orders in two precisions are instantiated there and not in every file that uses the model.
