@@ -96,7 +96,9 @@ class WheelDrive {
   // The first half of step `step`: set down at WheelSpec::start (then at rest), then the
   // kick of its height, the schedule's x velocity and spin at mid-step (the drift is exact for a ramp),
   // the drift, and the mesh moved with it.
-  void first_half(std::int64_t step, double dt, const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh) {
+  // The model's step and dt by reference (read again after set_down, as the model's own time() was:
+  // then t = step dt - time_placed is one fused multiply-add, as it was before this class; bitwise).
+  void first_half(const std::int64_t& step, const double& dt, const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh) {
     auto& b = body_(0);
     auto& at = placement_(0);
     if (!placed()) {
