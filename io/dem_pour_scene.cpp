@@ -52,8 +52,9 @@ void read_wheel(const SceneTable& t, const dem::PourSpec& p, double duration, de
 
 }  // namespace
 
-DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::string& accuracy,
-                                 const std::string& precision) {
+DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  const std::string& accuracy = options.accuracy;
+  const std::string& precision = options.precision;
   DemPourScene out;
   const OpenScene s = open_scene(file, "dem_pour", dem::effect_table(), precision, out);
   const SceneTable& root = s.root;
@@ -161,7 +162,8 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::s
     gravel.fail("count", e.what());
   }
   const double spheres_per_particle = p.shapes.size() == 1 && p.shapes[0] == "sphere" ? 1.0 : 5.0;
-  out.cost = dem_cost(spheres_per_particle * p.count, std::ceil(out.duration / c.dt));
+  out.steps = static_cast<std::int64_t>(std::ceil(out.duration / c.dt));
+  out.cost = dem_cost(spheres_per_particle * p.count, double(out.steps));
   out.cost.size_keys = {"gravel.count = " + std::to_string(count) + " (" + std::to_string(p.count) + " at accuracy '" +
                             out.header.accuracy + "')",
                         "time.duration = " + format_number(out.duration) + " s", "dt = " + format_number(c.dt) + " s"};

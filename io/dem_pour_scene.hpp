@@ -14,6 +14,7 @@
 //   [output] snapshots, sample_every    [accuracy] default = "paper" (draft: count / 4, standard: / 2)
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -29,13 +30,13 @@ struct DemPourScene {
   dem::Config config;     // the pour (dt resolved)
   dem::PourSpec pour;
   double duration = 0.0;  // simulated seconds
+  std::int64_t steps = 0;  // steps of config.dt over the duration (decided here, once)
   int snapshots = 0;      // over the run (HDF5/XDMF)
   std::int64_t sample_every = 0;
   dem::TimeStepLimit limit;
   CostEstimate cost;
 };
 
-DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const std::string& accuracy = "",
-                                 const std::string& precision = "");
+DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneOptions& options = {});
 
 }  // namespace polymech::io

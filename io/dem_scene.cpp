@@ -31,7 +31,8 @@ dem::Material read_material(const SceneTable& t, bool wall) {
 
 }  // namespace
 
-DemScene load_dem_scene(const std::filesystem::path& file, const std::string& precision) {
+DemScene load_dem_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  const std::string& precision = options.precision;
   DemScene out;
   const OpenScene s = open_scene(file, "dem", dem::effect_table(), precision, out);
   const SceneTable& root = s.root;

@@ -32,6 +32,6 @@ struct DemScene {
 // The configuration of one run of the scene: angle and restitution from the scene's lists.
 dem::Config dem_impact_config(const DemScene& s, double angle_deg, double restitution);
 
-DemScene load_dem_scene(const std::filesystem::path& file, const std::string& precision = "");
+DemScene load_dem_scene(const std::filesystem::path& file, const SceneOptions& options = {});  // options.accuracy: unused (the Chung & Ooi tests have one size)
 
 }  // namespace polymech::io

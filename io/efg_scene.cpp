@@ -35,7 +35,9 @@ CostEstimate efg_cost(double nodes, double gauss_points, double support_factor) 
 
 }  // namespace
 
-EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& precision, const std::string& accuracy) {
+EfgScene load_efg_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  const std::string& accuracy = options.accuracy;
+  const std::string& precision = options.precision;
   EfgScene out;
   const OpenScene s = open_scene(file, "efg", efg::effect_table(), precision, out);
   const SceneTable& root = s.root;
@@ -125,6 +127,7 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& pr
     out.output_every = static_cast<int>(dyn->integer("output_every", 1, 1, 1000000));
     const double steps = std::ceil(out.duration / out.dt - 1e-9);
     if (!(steps <= 1e6)) dyn->fail("duration", "gives " + format_number(steps) + " steps of dynamic.dt; at most 1e6");
+    out.steps = static_cast<std::int64_t>(steps);
     // the unconditionally stable average-acceleration rule: dt is an accuracy choice; refuse one that
     // does not resolve the dilatational wave crossing one h_max
     const double lam = c.young * c.poisson / ((1 + c.poisson) * (1 - 2 * c.poisson)), mu = c.young / (2 * (1 + c.poisson));

@@ -4,6 +4,7 @@
 // estimated and checked before anything is built.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -21,12 +22,13 @@ struct EfgScene {
   bool dynamic = false;
   double dt = 0.0;           // [s]
   double duration = 0.0;     // [s]
+  std::int64_t steps = 0;    // dynamic: Newmark steps of dt over the duration (decided here, once)
   int output_every = 1;      // steps between J' and crack-opening samples
   int domain_cells = 20;     // radial and angular cells of the J' domain part (4 x 4 Gauss points each)
   CostEstimate cost;
 };
 
 // `accuracy` ("" = the scene's [accuracy] default, else draft / standard / paper) scales h_min and h_max.
-EfgScene load_efg_scene(const std::filesystem::path& file, const std::string& precision = "", const std::string& accuracy = "");
+EfgScene load_efg_scene(const std::filesystem::path& file, const SceneOptions& options = {});
 
 }  // namespace polymech::io

@@ -48,8 +48,9 @@ CostEstimate isph_cost(double particles, double wall_points, int dim, double ste
   return c;
 }
 
-IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& precision,
-                          const std::string& accuracy) {
+IsphScene load_isph_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  const std::string& accuracy = options.accuracy;
+  const std::string& precision = options.precision;
   IsphScene out;
   const OpenScene s = open_scene(file, "isph", isph::effect_table(), precision, out);
   const SceneTable& root = s.root;
@@ -183,6 +184,23 @@ IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& 
   const std::string why = isph::check(c);
   if (!why.empty()) s.model.fail("kind", why);
   return out;
+}
+
+nlohmann::json isph_choices(const isph::Config& c) {
+  using isph::GhostInterpolation, isph::PressureGradient, isph::SurfaceDetection;
+  nlohmann::json j;
+  j["dimension"] = c.dim;
+  j["spacing"] = c.spacing;
+  j["dt"] = c.dt;
+  j["alpha"] = c.alpha;
+  j["ppe_operator"] = c.ppe_stored ? "stored" : "matrix_free";
+  j["ppe_preconditioner"] = c.ppe_preconditioner == isph::Config::Preconditioner::two_level ? "two_level" : "jacobi";
+  j["surface_detection"] = c.surface_detection == SurfaceDetection::divergence              ? "divergence"
+                           : c.surface_detection == SurfaceDetection::divergence_or_density ? "divergence_or_density"
+                                                                                             : "density";
+  j["pressure_gradient"] = c.pressure_gradient == PressureGradient::difference ? "difference" : "symmetric";
+  j["ghost_interpolation"] = c.ghost_interpolation == GhostInterpolation::linear ? "linear" : "shepard";
+  return j;
 }
 
 }  // namespace polymech::io

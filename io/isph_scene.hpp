@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "io/cost.hpp"
 #include "io/scene.hpp"
 #include "isph/setup.hpp"
@@ -27,8 +29,12 @@ struct IsphScene {
   CostEstimate cost;
 };
 
-IsphScene load_isph_scene(const std::filesystem::path& file, const std::string& precision = "",
-                          const std::string& accuracy = "");
+IsphScene load_isph_scene(const std::filesystem::path& file, const SceneOptions& options = {});
+
+// The summary keys that say how a run was set up: dimension, spacing, dt and the readings that are scene
+// choices (docs/METHODS.md): alpha of eq. (4), the PPE operator and preconditioner, the free-surface test,
+// the pressure gradient's form and the ghost interpolation.
+nlohmann::json isph_choices(const isph::Config& c);
 
 // ISPH: particles, wall points, steps; the rate of docs/PERFORMANCE.md "ISPH".
 CostEstimate isph_cost(double particles, double wall_points, int dim, double steps, bool stored = true,

@@ -294,6 +294,7 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   if (!(steps <= 1e12))
     time.fail_table("the run would take " + format_number(steps) + " steps of dt = " + format_number(c.dt) +
                     " s; allowed: at most 1e12 steps (shorten time.end_time or loading.ramp / loading.hold)");
+  out.steps = static_cast<std::int64_t>(steps);
   out.cost = cost(steps);
   return out;
 }

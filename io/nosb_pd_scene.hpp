@@ -26,6 +26,7 @@ struct NosbPdScene {
   nosb_pd::Config config;  // at the chosen accuracy (config.dt resolved: never 0)
   double stable_dt = 0.0;  // stability limit of this resolution [s]
   double end_time = 0.0;   // impact: simulated time [s]
+  std::int64_t steps = 0;  // impact: steps of config.dt to end_time; tension: the schedule's length (decided here, once)
   nosb_pd::TensionSchedule tension;  // tension: ramp and hold, in bar transit times
   std::int64_t sample_every = 50;    // steps between energy / projectile samples
   std::int64_t snapshots = 0;        // number of field snapshots over the run (0: none)

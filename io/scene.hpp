@@ -129,6 +129,14 @@ struct AccuracyChoice {
 AccuracyChoice read_accuracy(const SceneTable& root, const std::string& requested, double requested_coarsening,
                              const std::string& default_preset = "draft");
 
+// What a user chooses when a scene is loaded, the same fields for every loader (load_<kind>_scene(file,
+// options)); empty: the scene's own. Loaders with more choices have their own struct with these two
+// fields (MpsSceneOptions, NosbPdSceneOptions, HelmholtzSceneOptions).
+struct SceneOptions {
+  std::string accuracy;   // "" -> the scene's [accuracy].default
+  std::string precision;  // "" -> the scene's [model].precision
+};
+
 // What every scene says about itself, whatever its model: the file, its title, the model kind, the
 // effects it asks for (resolved against the model's), the precision and the accuracy preset.
 struct SceneHeader {

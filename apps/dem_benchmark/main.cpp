@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
       std::sort(files.begin(), files.end());
     }
     std::vector<pm::io::DemScene> scenes;
-    for (const auto& f : files) scenes.push_back(pm::io::load_dem_scene(f, opt.precision));
+    for (const auto& f : files) scenes.push_back(pm::io::load_dem_scene(f, {"", opt.precision}));
     bool stop = false;
     for (const auto& s : scenes) stop = pm::apps::announce_cost("dem_benchmark", s.header, s.cost, opt) || stop;
     if (stop) return 0;

@@ -17,26 +17,14 @@
 #include <cstdio>
 #include <fstream>
 
-#include "apps/common/app.hpp"
-#include "apps/common/restart.hpp"
-#include "dem/dem.hpp"
+#include "apps/common/case.hpp"
+#include "dem/analysis.hpp"
 #include "io/dem_pour_scene.hpp"
-#include "io/progress.hpp"
 
 namespace pm = polymech;
 namespace dm = polymech::dem;
 
 namespace {
-
-std::vector<std::array<double, 4>> sphere_rows(const dm::Dem<double>& m) {
-  const auto& s = m.spheres();
-  auto x0 = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.x0);
-  auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
-  auto r = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.radius);
-  std::vector<std::array<double, 4>> rows(static_cast<std::size_t>(s.size()));
-  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = {x0(i, 0) + u(i, 0), x0(i, 1) + u(i, 1), x0(i, 2) + u(i, 2), r(i)};
-  return rows;
-}
 
 void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, const dm::PourSpec& p) {
   if (!c.clumps.empty()) throw std::invalid_argument("--lammps-data: the scene has clumps; the peer run takes spheres only");
@@ -53,61 +41,11 @@ void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, c
   }
 }
 
-// Means of the wheel's histories over its steady stage: the last half of the time after the speed ramp
-// (the whole drive's last quarter when that is shorter than a quarter of it).
-struct WheelMeans {
-  double from = 0.0, sinkage = 0.0, vertical = 0.0, tractive = 0.0, torque = 0.0;
-  int samples = 0;
-};
-WheelMeans steady_means(const std::vector<std::vector<double>>& w, double speed_to) {
-  WheelMeans m;
-  if (w[0].empty()) return m;
-  const double end = w[1].back();
-  m.from = std::max(speed_to + 0.5 * (end - speed_to), 0.75 * end);
-  for (std::size_t k = 0; k < w[0].size(); ++k) {
-    if (w[1][k] < m.from) continue;
-    m.sinkage += w[4][k];
-    m.vertical += w[5][k];
-    m.tractive += w[6][k];
-    m.torque += w[7][k];
-    ++m.samples;
-  }
-  if (m.samples > 0) {
-    m.sinkage /= m.samples;
-    m.vertical /= m.samples;
-    m.tractive /= m.samples;
-    m.torque /= m.samples;
-  }
-  return m;
-}
-
-// The bed's surface across the track (Fig. 7): the highest sphere top in columns of 2 r_max in y over
-// the x range the wheel has run over, averaged over x; with the bed's level under the wheel at start.
-std::vector<std::vector<double>> track_profile(const std::vector<std::array<double, 4>>& rows, const dm::PourSpec& p, double x0, double x1) {
-  const double cell = 2 * p.radius_max;
-  const int ny = std::max(1, static_cast<int>(p.bin[1] / cell)), nx = std::max(1, static_cast<int>((x1 - x0) / cell));
-  std::vector<double> top(static_cast<std::size_t>(nx * ny), 0.0);
-  for (const auto& r : rows) {
-    if (r[0] < x0 || r[0] >= x0 + nx * cell || r[1] < 0 || r[1] >= ny * cell) continue;
-    const auto k = static_cast<std::size_t>(static_cast<int>((r[0] - x0) / cell) * ny + static_cast<int>(r[1] / cell));
-    top[k] = std::max(top[k], r[2] + r[3]);
-  }
-  std::vector<std::vector<double>> cols(2);
-  for (int j = 0; j < ny; ++j) {
-    double h = 0;
-    for (int i = 0; i < nx; ++i) h += top[static_cast<std::size_t>(i * ny + j)];
-    cols[0].push_back((j + 0.5) * cell);
-    cols[1].push_back(h / nx);
-  }
-  return cols;
-}
-
-int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt,
-             const std::string& lammps_data, const std::string& argv0) {
+int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
+             const std::string& lammps_data, const std::string& command) {
   const dm::Config& c = scene.config;
-  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.duration / c.dt));
-  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("dem_pour", scene.header, steps, ""));
-  pm::io::make_output_dir(opt.out);
+  const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
+  pm::apps::Case cs({"dem_pour", scene.header, steps, c.dt}, opt, ropt);
   if (!lammps_data.empty()) write_lammps_data(lammps_data, c, scene.pour);
   dm::Dem<double> model(c);
   const auto spheres = model.sphere_count();
@@ -119,14 +57,12 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
                scene.pour.bin[2], c.dt, model.limit().describe().c_str(), static_cast<long long>(steps), steps * c.dt,
                pm::kx::concurrency<pm::ExecSpace>());
 
-  pm::io::SnapshotMesh mesh;
-  mesh.dim = 3;
-  std::vector<double> radius, clump;
-  for (const auto& row : sphere_rows(model)) {
-    mesh.points.insert(mesh.points.end(), row.begin(), row.begin() + 3);
+  // snapshots: displacement from the start, velocity, radius and the clump each sphere belongs to
+  std::vector<double> points, radius, clump(static_cast<std::size_t>(spheres), -1.0);
+  for (const auto& row : dm::sphere_rows(model)) {
+    points.insert(points.end(), row.begin(), row.begin() + 3);
     radius.push_back(row[3]);
   }
-  clump.assign(static_cast<std::size_t>(spheres), -1.0);
   for (std::size_t i = c.spheres.size(), b = 0, k = 0; i < clump.size(); ++i) {  // members, clump after clump
     clump[i] = double(b);
     if (++k == c.clump_shapes[static_cast<std::size_t>(c.clumps[b].shape)].spheres.size()) {
@@ -134,111 +70,72 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
       ++b;
     }
   }
-  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
-  auto snapshot = [&](std::int64_t step) {
-    const auto& s = model.spheres();
-    auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
-    auto v = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.v);
-    std::vector<double> hu(u.data(), u.data() + u.size()), hv(v.data(), v.data() + v.size());
-    snapshots.add(step, model.time(), {{"displacement", 3, hu}, {"velocity", 3, hv}, {"radius", 1, radius}, {"clump", 1, clump}});
-  };
-  std::vector<std::vector<double>> series(4);  // time, kinetic, mean height, top height
+  cs.snapshots(pm::apps::point_mesh(3, std::move(points)))
+      .every(scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0, [&](std::int64_t) {
+        const auto& s = model.spheres();
+        auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
+        auto v = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.v);
+        std::vector<double> hu(u.data(), u.data() + u.size()), hv(v.data(), v.data() + v.size());
+        return pm::apps::CaseSnapshots::Fields{{"displacement", 3, hu}, {"velocity", 3, hv}, {"radius", 1, radius}, {"clump", 1, clump}};
+      }, [&](std::int64_t) { return model.time(); });
+  pm::apps::Series series({"time", "kinetic_energy", "mean_height", "top_height"}), wheel_series(dm::wheel_columns());
   const bool wheel = c.wheel.enabled();
-  std::vector<std::vector<double>> wheel_series(10);  // see the header of wheel.csv below
-  auto sample = [&](std::int64_t) {
-    if (wheel && model.wheel().placed) {
-      const auto w = model.wheel();
-      const double row[10] = {model.time(), w.time, w.centre[0], w.centre[2], 1e3 * w.sinkage, w.vertical_force, w.tractive_force,
-                              w.driving_torque, w.load, w.speed};
-      for (std::size_t k = 0; k < 10; ++k) wheel_series[k].push_back(row[k]);
-    }
-    const auto rows = sphere_rows(model);
-    double mean = 0, top = 0;
-    for (const auto& r : rows) {
-      mean += r[2];
-      top = std::max(top, r[2] + r[3]);
-    }
-    series[0].push_back(model.time());
-    series[1].push_back(model.kinetic_energy());
-    series[2].push_back(mean / double(rows.size()));
-    series[3].push_back(top);
+  cs.records.keep("dem_pour/series", series);
+  if (wheel) cs.records.keep("dem_pour/wheel", wheel_series);
+  cs.hooks.sample_every = scene.sample_every;
+  cs.hooks.sample_at_start = true;
+  cs.hooks.sample = [&](std::int64_t) {
+    if (wheel && model.wheel().placed) wheel_series.append(dm::wheel_row(model.time(), model.wheel()));
+    const auto s = dm::pour_sample(dm::sphere_rows(model));
+    series.append({model.time(), model.kinetic_energy(), s.mean_height, s.top_height});
   };
-
-  pm::io::Progress progress("dem_pour", steps, c.dt, !opt.quiet);
-  pm::models::RunHooks hooks;
   // the heap: the wall x = lx opens at release_at (moved far behind the spheres; planes are state, so a
   // restart after the release keeps it open)
   const auto release_step = scene.pour.release_at > 0 ? static_cast<std::int64_t>(std::llround(scene.pour.release_at / c.dt)) : -1;
-  hooks.after_step = [&](std::int64_t k) {
-    progress.update(k);
+  cs.after_step = [&](std::int64_t k) {
     if (k == release_step) model.move_plane(dm::kReleaseWall, {1e3, 0.0, 0.0});
   };
-  hooks.sample_every = scene.sample_every;
-  hooks.sample_at_start = true;
-  hooks.sample = sample;
-  hooks.snapshot_every = scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0;
-  hooks.snapshot = snapshot;
-  hooks.watchdog.keep_last_good = true;
-  checkpoints.attach(hooks, [&](pm::models::Archive& a) {
-    snapshots.save(a);
-    a.put_columns("dem_pour/series", series);
-    if (wheel) a.put_columns("dem_pour/wheel", wheel_series);
-  }, opt.quiet);
-  if (hooks.resume) {
-    snapshots.resume(*hooks.resume);
-    series = hooks.resume->get_columns<double>("dem_pour/series");
-    if (wheel) wheel_series = hooks.resume->get_columns<double>("dem_pour/wheel");
-    hooks.sample_at_start = false;
-    progress.resume_at(checkpoints.resume_step());
-  }
-  const auto stats = pm::models::run(model, steps - checkpoints.resume_step(), hooks);
-  progress.done(stats.steps);
-  if (stats.diverged)
-    std::fprintf(stderr, "[dem_pour] the run diverged at step %lld: %s; the last good state (step %lld) is the last snapshot\n",
-                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step));
+  cs.hooks.watchdog.keep_last_good = true;
+  const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
 
-  const auto rows = sphere_rows(model);
+  const auto rows = dm::sphere_rows(model);
   std::array<double, 3> lo{}, hi{};
   dm::bed_box(rows, scene.pour, lo, hi);
   const bool bed = hi[2] > lo[2];  // a bed thicker than 2 radius_max (not at draft accuracy on a wide bin)
   const double phi = bed ? dm::packing_fraction(rows, lo, hi, 80) : NAN;
-  pm::io::write_csv(opt.out / "energy.csv", {"time", "kinetic_energy", "mean_height", "top_height"}, series);
-  const auto xdmf = snapshots.finish();
+  series.write_csv(cs.out() / "energy.csv");
+  std::vector<std::string> files = {"summary.json", "energy.csv", "fields.h5", cs.snapshots().finish().filename().string()};
 
-  nlohmann::json j = pm::apps::summary_header("dem_pour", scene.header);
-  j["command"] = argv0;
-  pm::apps::put_run_record(j, stats);
+  nlohmann::json j = cs.summary();
+  j["command"] = command;
   if (scene.pour.release_at > 0) {  // a heap: its angle, not a bed
     std::vector<std::array<double, 2>> profile;
     const double angle = dm::repose_angle(rows, scene.pour, &profile);
-    std::vector<std::vector<double>> cols(2);
-    for (const auto& p : profile) {
-      cols[0].push_back(p[0]);
-      cols[1].push_back(p[1]);
-    }
-    pm::io::write_csv(opt.out / "heap_profile.csv", {"x", "surface_height"}, cols);
+    pm::apps::Series heap({"x", "surface_height"});
+    for (const auto& p : profile) heap.append({p[0], p[1]});
+    heap.write_csv(cs.out() / "heap_profile.csv");
     j["repose_angle_deg"] = std::isfinite(angle) ? nlohmann::json(angle) : nlohmann::json(nullptr);
     j["release_at"] = scene.pour.release_at;
     std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, angle);
   }
   if (wheel) {  // seed 002 paper 2, Figs. 7-10
-    pm::io::write_csv(opt.out / "wheel.csv",
-                      {"time", "time_from_start", "x", "z", "sinkage_mm", "vertical_force", "tractive_force", "driving_torque", "load", "speed"},
-                      wheel_series);
+    wheel_series.write_csv(cs.out() / "wheel.csv");
     const auto w = model.wheel();
-    const auto means = steady_means(wheel_series, c.wheel.speed_to);
-    pm::io::write_csv(opt.out / "track_profile.csv", {"y", "surface_height"},
-                      track_profile(rows, scene.pour, c.wheel.x_start, std::max(c.wheel.x_start + 2 * scene.pour.radius_max, w.centre[0])));
-    j["sinkage_mm"] = means.samples > 0 ? nlohmann::json(means.sinkage) : nlohmann::json(nullptr);
-    j["vertical_force"] = means.samples > 0 ? nlohmann::json(means.vertical) : nlohmann::json(nullptr);
-    j["tractive_force"] = means.samples > 0 ? nlohmann::json(means.tractive) : nlohmann::json(nullptr);
-    j["driving_torque"] = means.samples > 0 ? nlohmann::json(means.torque) : nlohmann::json(nullptr);
+    const auto means = dm::steady_means(wheel_series.all(), c.wheel.speed_to);
+    pm::io::write_csv(cs.out() / "track_profile.csv", {"y", "surface_height"},
+                      dm::track_profile(rows, scene.pour, c.wheel.x_start, std::max(c.wheel.x_start + 2 * scene.pour.radius_max, w.centre[0])));
+    auto mean = [&](double x) { return means.samples > 0 ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    j["sinkage_mm"] = mean(means.sinkage);
+    j["vertical_force"] = mean(means.vertical);
+    j["tractive_force"] = mean(means.tractive);
+    j["driving_torque"] = mean(means.torque);
     j["steady_stage_from"] = means.from;
     j["paper_sinkage_mm"] = 53.6;
     j["wheel"] = {{"radius", c.wheel.radius}, {"width", c.wheel.width}, {"mass", c.wheel.mass}, {"load", c.wheel.load},
                   {"speed", c.wheel.speed}, {"slip", c.wheel.slip}, {"start", c.wheel.start}, {"facets_around", c.wheel.around},
                   {"facets_across", c.wheel.across}, {"bed_level", w.bed_level}, {"travel", w.centre[0] - c.wheel.x_start},
                   {"time_driven", w.time}};
+    files.insert(files.end(), {"wheel.csv", "track_profile.csv"});
     std::printf("wheel: %.3g s after it was set down, travelled %.3g m; steady stage (t >= %.3g s): rim sinkage %.2f mm (paper, deformable "
                 "tyre: 53.6), vertical force %.4g N (load %.4g), tractive force %.4g N, driving torque %.4g N m (wheel.csv)\n",
                 w.time, w.centre[0] - c.wheel.x_start, means.from, means.sinkage, means.vertical, c.wheel.load, means.tractive, means.torque);
@@ -257,22 +154,17 @@ int run_case(const pm::io::DemPourScene& scene, pm::apps::CommonOptions opt, con
   j["simulated_time"] = model.time();
   j["final_kinetic_energy"] = model.kinetic_energy();
   j["wall_seconds"] = stats.wall_seconds;
-  j["sphere_steps_per_second"] = stats.wall_seconds > 0 ? double(spheres) * double(stats.steps - checkpoints.resume_step()) / stats.wall_seconds : 0.0;
+  const double rate = stats.wall_seconds > 0 ? double(spheres) * double(stats.steps - cs.resume_step()) / stats.wall_seconds : 0.0;
+  j["sphere_steps_per_second"] = rate;
   j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["sphere_list_builds"] = model.sphere_list_builds();
-  j["files"] = {"summary.json", "energy.csv", "fields.h5", xdmf.filename().string()};
-  if (wheel) {
-    j["files"].push_back("wheel.csv");
-    j["files"].push_back("track_profile.csv");
-  }
-  pm::io::write_json(opt.out / "summary.json", j);
-  checkpoints.finished();
+  const int rc = cs.finish(j, stats, files);
   std::printf("%d particles (%lld spheres) poured in %.3f s simulated: packing fraction %.4f in [%.3g, %.3g] x [%.3g, %.3g] x "
               "[%.3g, %.3g] m, kinetic energy %.3g J; wall %.1f s (%.3g sphere-steps/s)\n",
               scene.pour.count, static_cast<long long>(spheres), model.time(), phi, lo[0], hi[0], lo[1], hi[1], lo[2], hi[2],
-              model.kinetic_energy(), stats.wall_seconds, double(j["sphere_steps_per_second"]));
-  std::printf("results in %s: summary.json, energy.csv, %s (open in ParaView)\n", opt.out.c_str(), xdmf.filename().c_str());
-  return stats.diverged ? 1 : 0;
+              model.kinetic_energy(), stats.wall_seconds, rate);
+  std::printf("results in %s: summary.json, energy.csv, %s (open in ParaView)\n", cs.out().c_str(), files[3].c_str());
+  return rc;
 }
 
 }  // namespace
@@ -286,11 +178,10 @@ int main(int argc, char** argv) {
   std::string lammps_data;
   app.add_option("--lammps-data", lammps_data, "also write the initial spheres as a LAMMPS/LIGGGHTS data file");
   if (const auto rc = pm::apps::parse_command_line(app, "dem_pour", argc, argv)) return *rc;
-  std::string command;
-  for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
+  const std::string command = pm::apps::command_line(argc, argv);
   return pm::apps::guarded("dem_pour", [&] {
     pm::apps::KokkosSession kokkos(opt);
-    const auto scene = pm::io::load_dem_pour_scene(opt.scene, opt.accuracy, opt.precision);
+    const auto scene = pm::io::load_dem_pour_scene(opt.scene, {opt.accuracy, opt.precision});
     if (pm::apps::announce_cost("dem_pour", scene.header, scene.cost, opt)) return 0;
     return run_case(scene, opt, ropt, lammps_data, command);
   });

@@ -12,8 +12,7 @@
 #include <memory>
 
 #include "analysis/spectrum.hpp"
-#include "apps/common/app.hpp"
-#include "apps/common/restart.hpp"
+#include "apps/common/case.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/progress.hpp"
 #include "mps_elastic/harmonics.hpp"
@@ -24,13 +23,13 @@ namespace me = polymech::mps_elastic;
 namespace {
 
 template <class T>
-int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt) {
+int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt) {
   const me::Config& c = scene.config;
   char extra[64];
   std::snprintf(extra, sizeof extra, "k_prime=%.17g", c.crack.k_prime);
-  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("mps_harmonics", scene.header, c.steps, extra));
-  const std::string phase = me::harmonics_phase(checkpoints.resume());
-  pm::io::make_output_dir(opt.out);
+  pm::apps::CaseSpec spec("mps_harmonics", scene.header, c.steps, c.dt, extra);
+  pm::apps::Case cs(spec, opt, ropt);
+  const std::string phase = me::harmonics_phase(cs.resume());
 
   pm::io::SnapshotMesh mesh;
   {
@@ -42,7 +41,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
       mesh.points[2 * static_cast<std::size_t>(i) + 1] = lat.x3(i);
     }
   }
-  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
+  auto& snapshots = cs.snapshots(std::move(mesh)).writer();
   std::unique_ptr<pm::io::Progress> progress;
   auto make_hooks = [&](const std::string& label, me::MpsElastic<T>& model) {
     std::fprintf(stderr, "[mps_harmonics] %s: %d particles, %lld bonds, %d crack pairs, %lld steps\n", label.c_str(),
@@ -53,17 +52,17 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
     me::RunHooks hooks;
     hooks.after_step = [p = progress.get()](std::int64_t k) { p->update(k); };
     // the snapshot writer holds the cracked run's fields: its record goes into that run's checkpoints
-    checkpoints.attach(hooks, [&snapshots, crack = label == "crack"](pm::models::Archive& a) {
+    cs.attach(hooks, [&snapshots, crack = label == "crack"](pm::models::Archive& a) {
       if (crack) snapshots.save(a);
-    }, opt.quiet);
+    });
     // the store keeps (and resumes) the highest-numbered checkpoints: the cracked run's are numbered
     // after the intact run's steps
     const std::int64_t offset = label == "crack" ? c.steps : 0;
     if (offset > 0)
       hooks.checkpoint.write = [write = hooks.checkpoint.write, offset](std::int64_t k, pm::models::Archive& a) { write(offset + k, a); };
     if (label == phase) {
-      progress->resume_at(checkpoints.resume_step() - offset);
-      if (label == "crack") snapshots.resume(*checkpoints.resume());
+      progress->resume_at(cs.resume_step() - offset);
+      if (label == "crack") snapshots.resume(*cs.resume());
     }
     if (label == "crack" && scene.snapshot_every > 0) {
       hooks.snapshot_every = scene.snapshot_every;
@@ -77,7 +76,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
   };
   const int field = scene.harmonics_component == "u1" ? pm::mps::probe_u1 : pm::mps::probe_u3;
   const auto res = me::run_harmonics_case<T>(c, scene.harmonics_probe, field, scene.normal_reaction_ratio, make_hooks,
-                                            checkpoints.resume());
+                                            cs.resume());
   if (progress) progress->done(c.steps);
   const auto& a = res.intact;
   const auto& b = res.crack;
@@ -90,7 +89,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
   const double a1_crack = pm::analysis::harmonic_amplitudes(sb, f0, 1)[0];
 
   const std::string comp = scene.harmonics_component;
-  pm::io::write_csv(opt.out / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
+  pm::io::write_csv(cs.out() / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
                     pm::io::Columns{b.times, b.signal, a.signal});
   {
     std::vector<double> f, xa, xb;
@@ -99,7 +98,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
       xb.push_back(a1_crack > 0 ? sb.amplitude[k] / a1_crack : 0.0);
       xa.push_back(a1_intact > 0 ? sa.amplitude[k] / a1_intact : 0.0);
     }
-    pm::io::write_csv(opt.out / "spectrum.csv", {"frequency", "crack", "intact"}, pm::io::Columns{f, xb, xa});
+    pm::io::write_csv(cs.out() / "spectrum.csv", {"frequency", "crack", "intact"}, pm::io::Columns{f, xb, xa});
   }
   // u1 and u3 at every probe, both runs (probes_crack.csv, probes_intact.csv)
   auto write_probes = [&](const me::ProbeHistory& h, const std::string& name) {
@@ -110,16 +109,16 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
         header.push_back(h.names[p] + "_" + pm::mps::probe_field_name(f));
         cols.push_back(h.values[p][f]);
       }
-    pm::io::write_csv(opt.out / name, header, cols);
+    pm::io::write_csv(cs.out() / name, header, cols);
   };
   write_probes(a.history, "probes_intact.csv");
   write_probes(b.history, "probes_crack.csv");
   if (!b.contact.times.empty())
-    pm::io::write_csv(opt.out / "contact_states.csv", {"time", "separation", "stick", "slip"},
+    pm::io::write_csv(cs.out() / "contact_states.csv", {"time", "separation", "stick", "slip"},
                       pm::io::Columns{b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
-  const auto xdmf = scene.snapshot_every > 0 ? snapshots.finish().filename().string() : std::string();
+  const auto xdmf = scene.snapshot_every > 0 ? cs.snapshots().finish().filename().string() : std::string();
 
-  nlohmann::json j = pm::apps::summary_header("mps_harmonics", scene.header);
+  nlohmann::json j = cs.summary();
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["steps"] = c.steps;
@@ -168,9 +167,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
                                     "probes_intact.csv"};
   if (!b.contact.times.empty()) files.push_back("contact_states.csv");
   if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
-  j["files"] = files;
-  pm::io::write_json(opt.out / "summary.json", j);
-  checkpoints.finished();
+  cs.finish(j, files);
 
   std::printf("harmonics of %s at probe %s (A_n / A_1, n = 1..5):\n", comp.c_str(), scene.harmonics_probe.c_str());
   std::printf("  crack : %.3g %.3g %.3g %.3g %.3g\n", rb[0], rb[1], rb[2], rb[3], rb[4]);
@@ -179,7 +176,7 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
     std::printf("normal reaction %.4g N/m = %.2f x the intact run's largest shear force %.4g N/m\n",
                 res.normal_reaction, scene.normal_reaction_ratio, a.max_shear_force);
   std::printf("wall %.1f s (intact) + %.1f s (crack); results in %s\n", a.stats.wall_seconds, b.stats.wall_seconds,
-              opt.out.c_str());
+              cs.out().c_str());
   return 0;
 }
 
@@ -207,6 +204,6 @@ int main(int argc, char** argv) {
       throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
     if (pm::apps::announce_cost("mps_harmonics", scene.header, scene.cost, opt)) return 0;
-    return scene.header.precision == "float" ? run_case<float>(scene, opt, ropt) : run_case<double>(scene, opt, ropt);
+    return pm::apps::with_precision(scene.header.precision, [&](auto t) { return run_case<decltype(t)>(scene, opt, ropt); });
   });
 }

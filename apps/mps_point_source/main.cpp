@@ -5,10 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "apps/common/app.hpp"
-#include "apps/common/restart.hpp"
+#include "apps/common/case.hpp"
 #include "io/mps_elastic_scene.hpp"
-#include "io/progress.hpp"
 #include "mps_elastic/run.hpp"
 
 namespace pm = polymech;
@@ -17,10 +15,9 @@ namespace me = polymech::mps_elastic;
 namespace {
 
 template <class T>
-int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt) {
+int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt) {
   const me::Config& c = scene.config;
-  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("mps_point_source", scene.header, c.steps));
-  pm::io::make_output_dir(opt.out);
+  pm::apps::Case cs({"mps_point_source", scene.header, c.steps, c.dt}, opt, ropt);
   me::MpsElastic<T> model(c);
   std::fprintf(stderr,
                "[mps_point_source] %s\n  accuracy %s (spacing %.3g m, x%g), %s precision, %d particles, %lld bonds, "
@@ -30,47 +27,23 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
                static_cast<long long>(c.steps), pm::kx::concurrency<pm::ExecSpace>());
 
   // Field snapshots: displacement, |u| / u0 (Fig. 4), velocity, volumetric strain, particle rotation.
-  pm::io::SnapshotMesh mesh;
-  mesh.dim = 2;
-  mesh.points = model.host_fields().x0;
-  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
   const double u0 = c.excitation.amplitude > 0 ? c.excitation.amplitude : 1.0;
-  auto snapshot = [&](std::int64_t step) {
+  cs.snapshots(pm::apps::point_mesh(2, model.host_fields().x0)).every(scene.snapshot_every, [&](std::int64_t) {
     const auto h = model.host_fields();
     std::vector<double> mag(h.e.size());
     for (std::size_t i = 0; i < mag.size(); ++i) mag[i] = std::hypot(h.u[2 * i], h.u[2 * i + 1]) / u0;
-    std::vector<pm::io::SnapshotField> fields = {
+    pm::apps::CaseSnapshots::Fields fields = {
         {"displacement", 2, h.u}, {"abs_u_over_u0", 1, mag}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}};
     if (!h.theta.empty()) fields.push_back({"rotation_angle", 1, h.theta});
-    snapshots.add(step, static_cast<double>(step) * c.dt, fields);
-  };
-
-  pm::io::Progress progress("mps_point_source", c.steps, c.dt, !opt.quiet);
-  me::RunHooks hooks;
-  hooks.after_step = [&](std::int64_t k) { progress.update(k); };
-  hooks.snapshot_every = scene.snapshot_every;
-  hooks.snapshot = snapshot;
-  hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
-  checkpoints.attach(hooks, [&](pm::models::Archive& a) { snapshots.save(a); }, opt.quiet);
-  if (hooks.resume) {
-    snapshots.resume(*hooks.resume);
-    progress.resume_at(checkpoints.resume_step());
-  }
-  const me::RunStats stats = me::run(model, c.steps - checkpoints.resume_step(), hooks);
-  progress.done(stats.steps);
+    return fields;
+  }, [&](std::int64_t k) { return static_cast<double>(k) * c.dt; });
+  cs.hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
+  const me::RunStats stats = cs.run([&](auto& hooks, std::int64_t n) { return me::run(model, n, hooks); });
+  const std::string xdmf = cs.snapshots().finish().filename().string();
   if (stats.diverged) {  // the summary says why and where; the last snapshot is the last good state
-    const auto xdmf = snapshots.finish();
-    nlohmann::json j = pm::apps::summary_header("mps_point_source", scene.header);
-    pm::apps::put_run_record(j, stats);
+    nlohmann::json j = cs.summary();
     j["steps"] = stats.steps;
-    j["files"] = {"summary.json", xdmf.filename().string()};
-    pm::io::write_json(opt.out / "summary.json", j);
-  checkpoints.finished();
-    checkpoints.finished();
-    std::fprintf(stderr, "mps_point_source: the run diverged at step %lld: %s; the last good state (step %lld) is the last snapshot in %s\n",
-                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step),
-                 xdmf.c_str());
-    return 1;
+    return cs.finish(j, stats, {"summary.json", xdmf});
   }
 
   // Wave speeds from arrival times (seed 000 §5.1).
@@ -92,13 +65,12 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
       header.push_back(h.names[p] + "_" + pm::mps::probe_field_name(f));
       columns.push_back(h.values[p][f]);
     }
-  pm::io::write_csv(opt.out / "probes.csv", header, columns);
-  pm::io::write_csv(opt.out / "energy.csv", {"time", "total_energy"}, pm::io::Columns{stats.energy.time, stats.energy.total});
-  const auto xdmf = snapshots.finish();
+  pm::io::write_csv(cs.out() / "probes.csv", header, columns);
+  pm::io::write_csv(cs.out() / "energy.csv", {"time", "total_energy"}, pm::io::Columns{stats.energy.time, stats.energy.total});
 
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   const double cp_a = model.cp_analytic(), cs_a = model.cs_analytic();
-  nlohmann::json j = pm::apps::summary_header("mps_point_source", scene.header);
+  nlohmann::json j = cs.summary();
   j["spacing"] = c.spacing;
   j["dt"] = c.dt;
   j["stable_dt"] = scene.stable_dt;
@@ -125,18 +97,14 @@ int run_case(const pm::io::MpsElasticScene& scene, pm::apps::CommonOptions opt, 
   j["energy_final"] = stats.energy.last;
   j["energy_drift"] = stats.energy.drift();
   j["energy_spread"] = stats.energy.spread();
-  pm::apps::put_run_record(j, stats);
-  j["files"] = {"summary.json", "probes.csv", "energy.csv", "fields.h5", xdmf.filename().string()};
-  pm::io::write_json(opt.out / "summary.json", j);
-  checkpoints.finished();
+  cs.finish(j, stats, {"summary.json", "probes.csv", "energy.csv", "fields.h5", xdmf});
 
   std::printf("cp: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cp, cp_a, 100 * (speeds.cp - cp_a) / cp_a);
   std::printf("cs: measured %.1f m/s, analytic %.1f m/s (%+.2f %%)\n", speeds.cs, cs_a, 100 * (speeds.cs - cs_a) / cs_a);
   if (!speed_note.empty()) std::printf("wave speeds: %s\n", speed_note.c_str());
   std::printf("energy drift after the pulse: %.2e; wall %.1f s (%.0f steps/s)\n", stats.energy.drift(),
               stats.wall_seconds, static_cast<double>(stats.steps) / stats.wall_seconds);
-  std::printf("results in %s: summary.json, probes.csv, energy.csv, %s (open in ParaView)\n", opt.out.c_str(),
-              xdmf.filename().c_str());
+  std::printf("results in %s: summary.json, probes.csv, energy.csv, %s (open in ParaView)\n", cs.out().c_str(), xdmf.c_str());
   return 0;
 }
 
@@ -157,6 +125,6 @@ int main(int argc, char** argv) {
     so.steps = opt.steps;
     const auto scene = pm::io::load_mps_elastic_scene(opt.scene, so);
     if (pm::apps::announce_cost("mps_point_source", scene.header, scene.cost, opt)) return 0;
-    return scene.header.precision == "float" ? run_case<float>(scene, opt, ropt) : run_case<double>(scene, opt, ropt);
+    return pm::apps::with_precision(scene.header.precision, [&](auto t) { return run_case<decltype(t)>(scene, opt, ropt); });
   });
 }

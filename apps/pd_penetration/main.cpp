@@ -7,10 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "apps/common/app.hpp"
-#include "apps/common/restart.hpp"
+#include "apps/common/case.hpp"
 #include "io/nosb_pd_scene.hpp"
-#include "io/progress.hpp"
 #include "nosb_pd/impact.hpp"
 
 namespace pm = polymech;
@@ -19,14 +17,13 @@ namespace np = polymech::nosb_pd;
 namespace {
 
 template <class T, int D>
-int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt,
+int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
              const std::string& argv0) {
   const np::Config& c = scene.config;
-  const auto steps = opt.steps > 0 ? opt.steps : static_cast<std::int64_t>(std::ceil(scene.end_time / c.dt));
+  const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
   char extra[96];
   std::snprintf(extra, sizeof extra, "velocity=%.17g; c_v=%.17g", c.projectile.velocity, c.stabilization.c_v);
-  pm::apps::Checkpoints checkpoints(opt, ropt, pm::apps::run_key("pd_penetration", scene.header, steps, extra));
-  pm::io::make_output_dir(opt.out);
+  pm::apps::Case cs({"pd_penetration", scene.header, steps, c.dt, extra}, opt, ropt);
   np::Impact<T, D> model(c);
   const np::NosbPd<T, D>& plate = model.plate();
   std::fprintf(stderr,
@@ -36,36 +33,19 @@ int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, cons
                plate.particles(), static_cast<long long>(plate.bonds()), c.projectile.velocity, c.stabilization.c_v,
                c.stabilization.omega_v, c.dt, scene.stable_dt, static_cast<long long>(steps), pm::kx::concurrency<pm::ExecSpace>());
 
-  pm::io::SnapshotMesh mesh;
-  mesh.dim = D;
-  mesh.points = plate.host_fields().x0;
-  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
-  auto snapshot = [&](std::int64_t step) {
-    const auto h = plate.host_fields();
-    std::vector<pm::io::SnapshotField> fields = {{"displacement", D, h.u}, {"velocity", D, h.v}};
-    if (!h.damage.empty()) fields.push_back({"damage", 1, h.damage});
-    if (!h.eps_p.empty()) fields.push_back({"plastic_strain", 1, h.eps_p});
-    snapshots.add(step, model.time(), fields);
-  };
-
-  pm::io::Progress progress("pd_penetration", steps, c.dt, !opt.quiet);
-  np::RunHooks hooks;
-  hooks.after_step = [&](std::int64_t k) { progress.update(k); };
-  hooks.sample_every = scene.sample_every;
-  hooks.snapshot_every = scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0;
-  hooks.snapshot = snapshot;
-  hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
-  checkpoints.attach(hooks, [&](pm::models::Archive& a) { snapshots.save(a); }, opt.quiet);
-  if (hooks.resume) {
-    snapshots.resume(*hooks.resume);
-    progress.resume_at(checkpoints.resume_step());
-  }
-  const np::RunStats stats = np::run_impact(model, steps - checkpoints.resume_step(), hooks, scene.stop_after_perforation);
-  progress.done(stats.steps);
-  if (stats.diverged)
-    std::fprintf(stderr, "[pd_penetration] the run diverged at step %lld: %s (no zero-energy control?); the last good "
-                 "state (step %lld) is the last snapshot\n",
-                 static_cast<long long>(stats.bad_step), stats.reason.c_str(), static_cast<long long>(stats.last_good_step));
+  cs.snapshots(pm::apps::point_mesh(D, plate.host_fields().x0))
+      .every(scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0, [&](std::int64_t) {
+        const auto h = plate.host_fields();
+        pm::apps::CaseSnapshots::Fields fields = {{"displacement", D, h.u}, {"velocity", D, h.v}};
+        if (!h.damage.empty()) fields.push_back({"damage", 1, h.damage});
+        if (!h.eps_p.empty()) fields.push_back({"plastic_strain", 1, h.eps_p});
+        return fields;
+      }, [&](std::int64_t) { return model.time(); });
+  cs.hooks.sample_every = scene.sample_every;
+  cs.hooks.watchdog.keep_last_good = true;  // snapshotted when the run diverges
+  const np::RunStats stats = cs.run([&](auto& hooks, std::int64_t n) {
+    return np::run_impact(model, n, hooks, scene.stop_after_perforation);
+  });
   const np::ImpactState impact = np::analyse_impact(model);
 
   // energy.csv and projectile.csv: the time series
@@ -80,22 +60,21 @@ int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, cons
     p[2].push_back(s.projectile.velocity[D - 1]);
     p[3].push_back(s.projectile.reaction[D - 1]);
   }
-  pm::io::write_csv(opt.out / "energy.csv",
+  pm::io::write_csv(cs.out() / "energy.csv",
                     {"time", "kinetic", "strain", "plastic", "viscous_dissipated", "hourglass_work", "contact", "short_range",
                      "projectile_kinetic", "total", "total_minus_initial", "broken_bonds"},
                     e);
-  pm::io::write_csv(opt.out / "projectile.csv", {"time", "nose_position", "velocity", "reaction"}, p);
-  const auto xdmf = snapshots.finish();
+  pm::io::write_csv(cs.out() / "projectile.csv", {"time", "nose_position", "velocity", "reaction"}, p);
+  const auto xdmf = cs.snapshots().finish();
 
   const double v0 = c.projectile.velocity, vexp = scene.experiment_residual_velocity;
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  nlohmann::json j = pm::apps::summary_header("pd_penetration", scene.header);
+  nlohmann::json j = cs.summary();
   j["command"] = argv0;
   j["initial_velocity"] = v0;
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
   j["perforated"] = impact.perforated;  // through and free of contact
   j["through"] = impact.through;        // nose more than a horizon below the plate (a plug may ride on it)
-  pm::apps::put_run_record(j, stats);
   j["experiment_residual_velocity"] = num(vexp);
   j["residual_velocity_error"] = num(stats.diverged ? NAN : impact.residual_velocity - vexp);
   j["particles"] = plate.particles();
@@ -127,9 +106,7 @@ int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, cons
                  {"contact", last.contact},
                  {"short_range", last.short_range},
                  {"projectile_kinetic", last.projectile_kinetic}};
-  j["files"] = {"summary.json", "energy.csv", "projectile.csv", "fields.h5", xdmf.filename().string()};
-  pm::io::write_json(opt.out / "summary.json", j);
-  checkpoints.finished();
+  const int rc = cs.finish(j, stats, {"summary.json", "energy.csv", "projectile.csv", "fields.h5", xdmf.filename().string()});
 
   std::printf("v0 = %.1f m/s -> residual %.1f m/s (%s)%s\n", v0, impact.residual_velocity,
               impact.perforated ? "perforated" : (impact.through ? "through, plug on the nose" : "not through at the end of the run"),
@@ -137,9 +114,9 @@ int run_case(const pm::io::NosbPdScene& scene, pm::apps::CommonOptions opt, cons
   std::printf("plate: core damage %.2f, rim damage %.2f, plug %.1f g (nominal %.1f g); energy error %.2e; wall %.1f s\n",
               impact.core_damage, impact.rim_damage, 1e3 * impact.plug_mass, 1e3 * impact.plug_mass_nominal, stats.energy_error(),
               stats.wall_seconds);
-  std::printf("results in %s: summary.json, energy.csv, projectile.csv, %s (open in ParaView)\n", opt.out.c_str(),
+  std::printf("results in %s: summary.json, energy.csv, projectile.csv, %s (open in ParaView)\n", cs.out().c_str(),
               xdmf.filename().c_str());
-  return stats.diverged ? 1 : 0;
+  return rc;
 }
 
 }  // namespace
@@ -154,8 +131,7 @@ int main(int argc, char** argv) {
   pm::apps::positive<double>(app.add_option("--velocity", velocity, "impact velocity [m/s] (default: the scene's)"));
   pm::apps::non_negative<double>(app.add_option("--cv", cv, "velocity viscosity coefficient c_v (default: the scene's)"));
   if (const auto rc = pm::apps::parse_command_line(app, "pd_penetration", argc, argv)) return *rc;
-  std::string command;
-  for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
+  const std::string command = pm::apps::command_line(argc, argv);
   return pm::apps::guarded("pd_penetration", [&] {
     pm::apps::KokkosSession kokkos(opt);
     pm::io::NosbPdSceneOptions so;
@@ -165,9 +141,8 @@ int main(int argc, char** argv) {
     so.c_v = cv;
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
     if (pm::apps::announce_cost("pd_penetration", scene.header, scene.cost, opt)) return 0;
-    const bool f = scene.header.precision == "float";
-    if (scene.config.dimension == 2)
-      return f ? run_case<float, 2>(scene, opt, ropt, command) : run_case<double, 2>(scene, opt, ropt, command);
-    return f ? run_case<float, 3>(scene, opt, ropt, command) : run_case<double, 3>(scene, opt, ropt, command);
+    return pm::apps::with_precision_and_dimension(scene.header.precision, scene.config.dimension, [&](auto t, auto d) {
+      return run_case<decltype(t), decltype(d)::value>(scene, opt, ropt, command);
+    });
   });
 }

@@ -8,10 +8,8 @@
 // shared run driver: checkpoints and --restart as in apps/common/restart.hpp (not --identify-omega-v).
 #include <cmath>
 #include <cstdio>
-#include <optional>
 
-#include "apps/common/app.hpp"
-#include "apps/common/restart.hpp"
+#include "apps/common/case.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "nosb_pd/tension.hpp"
 
@@ -21,19 +19,17 @@ namespace np = polymech::nosb_pd;
 namespace {
 
 template <class T, int D>
-int run_case(pm::io::NosbPdScene scene, pm::apps::CommonOptions opt, const pm::apps::RestartOptions& ropt, bool identify,
+int run_case(pm::io::NosbPdScene scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt, bool identify,
              double horizon_ratio) {
   np::Config& c = scene.config;
   if (identify && !ropt.restart.empty())
     throw std::invalid_argument("--restart: the --identify-omega-v run has no checkpoints (it takes seconds); run it again");
-  std::optional<pm::apps::Checkpoints> checkpoints;
-  if (!identify) {
-    char extra[64];
-    std::snprintf(extra, sizeof extra, "horizon_ratio=%.17g", horizon_ratio);
-    checkpoints.emplace(opt, ropt, pm::apps::run_key("pd_tension", scene.header, opt.steps, extra));
-  }
-  pm::io::make_output_dir(opt.out);
-  bool diverged = false;
+  char extra[64];
+  std::snprintf(extra, sizeof extra, "horizon_ratio=%.17g", horizon_ratio);
+  pm::apps::CaseSpec spec("pd_tension", scene.header, opt.steps, c.dt, extra);
+  spec.checkpoints = !identify;
+  spec.progress = false;  // run_tension prints its own (dynamic relaxation has no fixed length)
+  pm::apps::Case cs(spec, opt, ropt);
   if (identify) {
     c = np::omega_v_identification(c);
     scene.header.effects = c.effects;  // what ran
@@ -48,6 +44,12 @@ int run_case(pm::io::NosbPdScene scene, pm::apps::CommonOptions opt, const pm::a
   j["particles"] = model.particles();
   j["bonds"] = model.bonds();
   j["dt"] = c.dt;
+  auto& snapshots = cs.snapshots(pm::apps::point_mesh(D, model.host_fields().x0));
+  auto write_fields = [&] {  // the displacement at the end
+    const auto h = model.host_fields();
+    snapshots.add(model.step_index(), model.time(), pm::io::Fields{{"displacement", D, h.u}, {"velocity", D, h.v}});
+    return std::vector<std::string>{"summary.json", "fields.h5", snapshots.finish().filename().string()};
+  };
   if (identify) {
     const auto r = np::identify_omega_v(model, scene.tension);
     j["omega_v"] = r.omega;
@@ -56,36 +58,27 @@ int run_case(pm::io::NosbPdScene scene, pm::apps::CommonOptions opt, const pm::a
     j["omega_v_times_spacing_over_cp"] = r.omega * c.spacing / c.material.p_wave_speed();
     std::printf("omega_v = %.4g rad/s (%lld zero crossings of v - vbar over %.3g s; omega_v h / c_p = %.3f)\n", r.omega,
                 static_cast<long long>(r.crossings), r.duration, r.omega * c.spacing / c.material.p_wave_speed());
-  } else {
-    pm::models::RunHooks hooks;
-    checkpoints->attach(hooks, nullptr, opt.quiet);
-    const auto r = np::run_tension(model, scene.tension, hooks);
-    diverged = r.run.diverged;
-    if (r.run.diverged)
-      std::fprintf(stderr, "[pd_tension] the run diverged at step %lld: %s\n", static_cast<long long>(r.run.bad_step), r.run.reason.c_str());
-    pm::apps::put_run_record(j, r.run);
-    j["modulus"] = r.modulus;
-    j["reference"] = r.reference;
-    j["relative_error"] = r.relative_error;
-    j["gauge_strain"] = r.gauge_strain;
-    j["stress"] = r.stress;
-    j["steps"] = r.steps;
-    j["wall_seconds"] = r.wall_seconds;
-    std::printf("E = %.4g Pa (reference %.4g Pa, %+.2f %%), gauge strain %.4g, %lld steps, %.1f s\n", r.modulus, r.reference,
-                100 * r.relative_error, r.gauge_strain, static_cast<long long>(r.steps), r.wall_seconds);
+    cs.finish(j, write_fields());
+    std::printf("results in %s\n", cs.out().c_str());
+    return 0;
   }
-  pm::io::SnapshotMesh mesh;
-  mesh.dim = D;
-  const auto h = model.host_fields();
-  mesh.points = h.x0;
-  pm::io::SnapshotWriter snapshots(opt.out, "fields", std::move(mesh));
-  snapshots.add(model.step_index(), model.time(), pm::io::Fields{{"displacement", D, h.u}, {"velocity", D, h.v}});
-  const auto xdmf = snapshots.finish();
-  j["files"] = {"summary.json", "fields.h5", xdmf.filename().string()};
-  pm::io::write_json(opt.out / "summary.json", j);
-  if (checkpoints) checkpoints->finished();
-  std::printf("results in %s\n", opt.out.c_str());
-  return diverged ? 1 : 0;
+  np::TensionResult r;
+  cs.run([&](auto& hooks, std::int64_t) {
+    r = np::run_tension(model, scene.tension, hooks);
+    return r.run;
+  });
+  j["modulus"] = r.modulus;
+  j["reference"] = r.reference;
+  j["relative_error"] = r.relative_error;
+  j["gauge_strain"] = r.gauge_strain;
+  j["stress"] = r.stress;
+  j["steps"] = r.steps;
+  j["wall_seconds"] = r.wall_seconds;
+  std::printf("E = %.4g Pa (reference %.4g Pa, %+.2f %%), gauge strain %.4g, %lld steps, %.1f s\n", r.modulus, r.reference,
+              100 * r.relative_error, r.gauge_strain, static_cast<long long>(r.steps), r.wall_seconds);
+  const int rc = cs.finish(j, r.run, write_fields());
+  std::printf("results in %s\n", cs.out().c_str());
+  return rc;
 }
 
 }  // namespace
@@ -111,8 +104,8 @@ int main(int argc, char** argv) {
     if (scene.config.loading != np::Loading::tension)
       throw pm::io::SceneError(opt.scene.string() + ": loading.kind must be \"tension\" for pd_tension");
     if (pm::apps::announce_cost("pd_tension", scene.header, scene.cost, opt)) return 0;
-    const bool f = scene.header.precision == "float";
-    if (scene.config.dimension == 2) return f ? run_case<float, 2>(scene, opt, ropt, identify, m) : run_case<double, 2>(scene, opt, ropt, identify, m);
-    return f ? run_case<float, 3>(scene, opt, ropt, identify, m) : run_case<double, 3>(scene, opt, ropt, identify, m);
+    return pm::apps::with_precision_and_dimension(scene.header.precision, scene.config.dimension, [&](auto t, auto d) {
+      return run_case<decltype(t), decltype(d)::value>(scene, opt, ropt, identify, m);
+    });
   });
 }

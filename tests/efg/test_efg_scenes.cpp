@@ -105,8 +105,8 @@ TEST(EfgScenes, BaseLoadsWithTadasFactor) {
   EXPECT_EQ(s.config.j_radii.size(), 2u);
   // draft coarsens the spacing x4
   // float (the shape functions and the stiffness kernel in float, the solve in double) is offered
-  EXPECT_EQ(io::load_efg_scene(dir.write("float.toml", kBase), "float").header.precision, "float");
-  const auto d = io::load_efg_scene(dir.write("scene.toml", kBase), "", "draft");
+  EXPECT_EQ(io::load_efg_scene(dir.write("float.toml", kBase), {"", "float"}).header.precision, "float");
+  const auto d = io::load_efg_scene(dir.write("scene.toml", kBase), {"draft", ""});
   EXPECT_NEAR(d.config.h_min, 4 * s.config.h_min, 1e-15);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "isph/analysis.hpp"
 #include "isph/isph.hpp"
 
 namespace isph_test {
@@ -58,7 +59,6 @@ Hydrostatic measure_hydrostatic(const Model& m, double height, std::vector<doubl
   constexpr int D = Model::dimension;
   const auto x = m.host_positions();
   if (p.empty()) p = m.host_pressure();
-  const auto v = m.host_velocities();
   const auto s = m.host_surface();
   const double rg = m.config().density * m.config().gravity;
   Hydrostatic h;
@@ -70,10 +70,8 @@ Hydrostatic measure_hydrostatic(const Model& m, double height, std::vector<doubl
     }
   h.surface_height = h.surface_particles > 0 ? hs / h.surface_particles : height;
   double e1 = 0, e2 = 0, n1 = 0, n2 = 0;
+  h.max_speed = ip::max_speed(m);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    double sp = 0;
-    for (int d = 0; d < D; ++d) sp += v[i * D + d] * v[i * D + d];
-    h.max_speed = std::max(h.max_speed, std::sqrt(sp));
     if (s[i]) continue;
     const double a = rg * (h.surface_height - x[i * D + 1]), b = rg * (height - x[i * D + 1]);
     e1 += (p[i] - a) * (p[i] - a);
@@ -86,17 +84,8 @@ Hydrostatic measure_hydrostatic(const Model& m, double height, std::vector<doubl
   return h;
 }
 
-// The surge front: the largest x of a fluid particle near the floor (y < 2 l0), plus l0 / 2.
-template <class Model>
-double front_position(const Model& m) {
-  constexpr int D = Model::dimension;
-  const auto x = m.host_positions();
-  const double l0 = m.config().spacing;
-  double front = 0.0;
-  for (std::size_t i = 0; i < x.size() / D; ++i)
-    if (x[i * D + 1] < 2 * l0) front = std::max(front, x[i * D]);
-  return front + 0.5 * l0;
-}
+// The surge front and the largest speed: what the app measures (models/isph/analysis.hpp).
+using polymech::isph::front_position;
 
 }  // namespace isph_test
 

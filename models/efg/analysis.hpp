@@ -1,0 +1,95 @@
+// What the EFG crack cases measure (seed 004, Hagihara et al.; docs/VALIDATION.md), used alike by
+// apps/efg, the tests and the sweeps:
+//   - static: K_I / (sigma sqrt(pi a)) from the J-integral on every path, against the handbook value;
+//   - dynamic: a sample of the stationary or running crack (J' on every path, the crack opening, the
+//     energy balance of the average-acceleration rule);
+//   - the displacement and stress at the nodes (MLS values: the nodal coefficients are not the
+//     displacements).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "efg/efg.hpp"
+
+namespace polymech::efg {
+
+// The static J on every path of config().j_radii (seed 004 eq. (13), quasi-static).
+struct StaticSif {
+  std::vector<double> radii, j, k, factor, error;  // per path; error: factor / handbook - 1
+  double mean = 0.0;                               // mean factor over the paths
+  double spread = 0.0;                             // (J_max - J_min) / J_max over the paths
+  double max_abs_error() const {
+    return std::abs(*std::max_element(error.begin(), error.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
+  }
+};
+template <class Model>
+StaticSif static_sif(const Model& model, double handbook) {
+  StaticSif s;
+  double lo = 1e300, hi = -1e300;
+  for (double r : model.config().j_radii) {
+    const auto res = model.j_integral(r);
+    s.radii.push_back(r);
+    s.j.push_back(res.j);
+    s.k.push_back(res.k);
+    s.factor.push_back(res.factor);
+    s.error.push_back(res.factor / handbook - 1);
+    lo = std::min(lo, res.j);
+    hi = std::max(hi, res.j);
+  }
+  for (double f : s.factor) s.mean += f;
+  s.mean /= static_cast<double>(s.factor.size());
+  s.spread = (hi - lo) / hi;
+  return s;
+}
+
+// One sample of a dynamic run: J' on every path (seed 004 eq. (13)) and the crack opening at the centre.
+struct DynamicSample {
+  std::vector<double> factor;  // K / (sigma sqrt(pi a0)) per path
+  double mean = 0.0;           // over the paths
+  double spread = 0.0;         // (J'_max - J'_min) / J'_max
+  double opening = 0.0;        // at x = 0
+  double energy_balance = 0.0; // kinetic + strain - load work
+};
+template <class Model>
+DynamicSample dynamic_sample(Model& model, int domain_cells) {
+  DynamicSample s;
+  double lo = 1e300, hi = -1e300, sum = 0.0;
+  for (double r : model.config().j_radii) {
+    const auto res = model.dynamic_j(r, domain_cells);
+    s.factor.push_back(res.factor);
+    sum += res.factor;
+    lo = std::min(lo, res.j);
+    hi = std::max(hi, res.j);
+  }
+  s.mean = sum / static_cast<double>(s.factor.size());
+  s.opening = model.dynamic_opening_at(0.0);
+  s.spread = hi > 0 ? (hi - lo) / hi : 0.0;
+  s.energy_balance = model.kinetic_energy() + model.strain_energy() - model.load_work();
+  return s;
+}
+
+// The displacement (2 per node) and stress (sigma_xx, sigma_yy, sigma_xy per node, Hooke's law of the
+// plane state) at the layout's nodes.
+struct NodalFields {
+  std::vector<double> displacement, stress;
+};
+template <class Model>
+NodalFields nodal_fields(const Model& model) {
+  const auto& nodes = model.layout().nodes;
+  const auto v = model.fields_at(nodes, "node");
+  const auto& cf = model.config();
+  const double nu = cf.poisson, mu = cf.young / (2 * (1 + nu));
+  double lam = cf.young * nu / ((1 + nu) * (1 - 2 * nu));
+  if (!cf.plane_strain) lam = 2 * lam * mu / (lam + 2 * mu);
+  NodalFields f;
+  for (std::size_t i = 0; i < v.size() / 6; ++i) {
+    const double* g = &v[6 * i];
+    f.displacement.insert(f.displacement.end(), {g[0], g[1]});
+    f.stress.insert(f.stress.end(), {(lam + 2 * mu) * g[2] + lam * g[5], lam * g[2] + (lam + 2 * mu) * g[5], mu * (g[3] + g[4])});
+  }
+  return f;
+}
+
+}  // namespace polymech::efg
