@@ -3,7 +3,7 @@
 them unchanged: issue 32).
 
     /usr/bin/python3 tools/compare_binaries.py OLD_BIN NEW_BIN [--apps isph efg ...] [--accuracy draft]
-                                               [--steps N] [--work DIR] [--jobs 1]
+                                               [--steps N] [--work DIR] [--skip STEM ...]
 
 OLD_BIN and NEW_BIN hold the app binaries (build/<preset>/bin of the two commits). Each scene of
 scenes/<folder>/ runs in the app that takes it, in OLD and NEW, into WORK/<app>/<scene>/{old,new}
@@ -52,16 +52,22 @@ def main():
     ap.add_argument("--steps", type=int, default=0, help="override every scene's step count (0: the scene's)")
     ap.add_argument("--work", default="/tmp/compare_binaries")
     ap.add_argument("--rtol", default="0")
+    ap.add_argument("--skip", nargs="*", default=[], help="scene stems not to run (e.g. the long floating_cylinder)")
     a = ap.parse_args()
+    for d in (a.old, a.new):
+        if not os.path.isdir(d):
+            print(f"compare_binaries: {d}: not a folder of app binaries (build/<preset>/bin)", file=sys.stderr)
+            sys.exit(2)
     failed = 0
     for app in a.apps:
         if app not in APPS:
-            sys.exit(f"compare_binaries: unknown app '{app}' (known: {', '.join(APPS)})")
+            print(f"compare_binaries: unknown app '{app}' (known: {', '.join(APPS)})", file=sys.stderr)
+            sys.exit(2)
         folder, takes = APPS[app]
         sdir = os.path.join(ROOT, "scenes", folder)
         for f in sorted(os.listdir(sdir)):
             stem = f[:-5]
-            if not f.endswith(".toml") or not takes(stem):
+            if not f.endswith(".toml") or not takes(stem) or stem in a.skip:
                 continue
             scene = os.path.join(sdir, f)
             args = ["--accuracy", a.accuracy] + (["--steps", str(a.steps)] if a.steps > 0 else [])

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -105,6 +106,7 @@ class Case {
     else if (!restart.restart.empty())
       throw std::invalid_argument("--restart: this " + spec_.app + " run has no checkpoints; run it again");
     io::make_output_dir(opt_.out);
+    if (restart.restart.empty()) remove_earlier_results();
   }
 
   const std::filesystem::path& out() const { return opt_.out; }
@@ -196,6 +198,39 @@ class Case {
   }
 
  private:
+  // A new run into a folder that holds an earlier run's results: the files its summary.json listed (and
+  // the summary) and unfinished HDF5 files (*.part, left by a killed run) go, so no stale file of
+  // another case is read as this run's (plots read every CSV they find). Nothing else is touched.
+  void remove_earlier_results() const {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> stale;
+    const fs::path summary = opt_.out / "summary.json";
+    try {
+      if (fs::exists(summary)) {
+        std::ifstream in(summary);
+        const auto j = nlohmann::json::parse(in);
+        if (j.contains("files") && j["files"].is_array())
+          for (const auto& f : j["files"])
+            if (f.is_string()) {
+              const fs::path name = f.get<std::string>();
+              if (name.has_filename() && name == name.filename() && name != "." && name != "..") stale.push_back(opt_.out / name);
+            }
+        stale.push_back(summary);
+      }
+    } catch (const std::exception&) {
+      // a damaged summary.json: the new run writes its own over it
+    }
+    for (const auto& e : fs::directory_iterator(opt_.out))
+      if (e.is_regular_file() && e.path().extension() == ".part") stale.push_back(e.path());
+    int removed = 0;
+    for (const auto& f : stale) {
+      std::error_code ec;
+      if (fs::is_regular_file(f) && fs::remove(f, ec)) ++removed;
+    }
+    if (removed > 0 && !opt_.quiet)
+      std::fprintf(stderr, "  removed %d file%s of an earlier run in %s\n", removed, removed == 1 ? "" : "s", opt_.out.c_str());
+  }
+
   CaseSpec spec_;
   CommonOptions opt_;
   std::optional<Checkpoints> checkpoints_;

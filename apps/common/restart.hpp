@@ -28,7 +28,8 @@ struct RestartOptions {
   std::filesystem::path restart;     // the output folder of the run to continue ("" = a new run)
   double checkpoint_every = 600.0;   // wall seconds between checkpoints (0: none by time)
   std::int64_t checkpoint_steps = 0; // also every n steps (0: none by steps)
-  bool keep_checkpoints = false;     // keep them after the run finished
+  bool keep_checkpoints = false;     // keep them after the run has finished
+  bool overwrite = false;            // start over where an interrupted run of the same case left checkpoints
 };
 
 inline void add_restart_options(CLI::App& app, RestartOptions& r) {
@@ -39,6 +40,8 @@ inline void add_restart_options(CLI::App& app, RestartOptions& r) {
          0.0, 1e7);
   non_negative<std::int64_t>(app.add_option("--checkpoint-steps", r.checkpoint_steps, "also checkpoint every N steps (0: none)"));
   app.add_flag("--keep-checkpoints", r.keep_checkpoints, "keep the checkpoints after the run has finished");
+  app.add_flag("--overwrite", r.overwrite,
+               "start over in an output folder that holds the checkpoints of this same run, interrupted (they are deleted)");
 }
 
 namespace detail {
@@ -82,7 +85,16 @@ class Checkpoints {
   Checkpoints(CommonOptions& o, const RestartOptions& r, const std::string& key)
       : options_(r), key_(key), store_(resolve(o, r) / "checkpoints") {
     if (r.restart.empty()) {
-      store_.clear();  // a new run in a folder that held an interrupted one: its checkpoints are stale
+      // A new run in a folder that holds an interrupted run's checkpoints: of this same run (app, scene
+      // bytes, options), re-typing the command without --restart would throw its work away, so it is
+      // refused unless --overwrite; of another run, they are stale.
+      if (const auto previous = store_.latest()) {
+        if (!r.overwrite && previous->archive.get_string("run/key") == key_)
+          throw std::invalid_argument(o.out.string() + " holds the checkpoint of this same run, interrupted at step " +
+                                      std::to_string(previous->step) + " (" + previous->file.string() +
+                                      "): continue it with --restart " + o.out.string() + ", or start over with --overwrite");
+      }
+      store_.clear();
       return;
     }
     from_ = store_.latest();

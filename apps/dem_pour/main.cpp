@@ -114,6 +114,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
     pm::apps::Series heap({"x", "surface_height"});
     for (const auto& p : profile) heap.append({p[0], p[1]});
     heap.write_csv(cs.out() / "heap_profile.csv");
+    files.push_back("heap_profile.csv");
     j["repose_angle_deg"] = std::isfinite(angle) ? nlohmann::json(angle) : nlohmann::json(nullptr);
     j["release_at"] = scene.pour.release_at;
     std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, angle);

@@ -104,6 +104,12 @@ def main():
         if any(f in left for f in ("summary.json", "fields.h5", "fields.xdmf")):
             print("a killed run left a file under its final name")
             return 1
+        if k == 0:  # the same command again, without --restart: refused, the checkpoints kept (issue 33 item 6)
+            again = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=a.timeout)
+            if again.returncode != 2 or "--restart" not in again.stderr or newest_step(run) < 0:
+                print(f"the killed run's command again without --restart: expected exit code 2 naming --restart and the "
+                      f"checkpoints kept, got {again.returncode}: {again.stderr}")
+                return 1
         cmd = [a.app] + args + ["--restart", run, "--quiet", "--checkpoint-steps", str(a.checkpoint_steps)]
         restarts += 1
     left = os.listdir(run)

@@ -185,7 +185,8 @@ def main():
 
     # --- every tool: --help, and refusals ---------------------------------------------------------------------
     scripts = sorted(os.path.basename(f) for f in glob.glob(os.path.join(tools, "*.py")))
-    not_tools = {"plotting.py", "compare_results.py"}  # the shared helpers; the result comparison (not a plot)
+    # the shared helpers; the result comparisons and the cost table (not plots; they check their folders themselves)
+    not_tools = {"plotting.py", "compare_results.py", "compare_binaries.py", "cost_table.py"}
     for script in scripts:
         if script in not_tools:
             continue
