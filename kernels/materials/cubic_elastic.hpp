@@ -105,10 +105,12 @@ struct AnisotropicElastic {
   static constexpr bool has_history = false;
   Stiffness6<T> C;
 
-  KOKKOS_INLINE_FUNCTION void update(const Voigt6<T>& strain, History& /*history*/, Voigt6<T>& stress,
-                                     Stiffness6<T>& tangent) const {
+  // Returns the number of local iterations, always 0 (HillPlasticity::update returns its own).
+  KOKKOS_INLINE_FUNCTION int update(const Voigt6<T>& strain, History& /*history*/, Voigt6<T>& stress,
+                                    Stiffness6<T>& tangent) const {
     stress = C * strain;
     tangent = C;
+    return 0;
   }
   KOKKOS_INLINE_FUNCTION Voigt6<T> stress(const Voigt6<T>& strain) const { return C * strain; }
   // sigma . eps / 2 per unit volume.
