@@ -1,0 +1,193 @@
+// Order-p Lagrange nodes on a structured solid mesh (host): the node lattice (p n_d + 1 nodes per direction,
+// GLL positions inside each cell, so a node shared by cells is one lattice point and needs no orientation
+// matching), node coordinates from each cell's multilinear map, the element node tables in storage order
+// (chunks of neighbouring cells, coloured by the parity of the chunk's block index: chunks of one colour
+// never share a node, so fem::parallel_for_batches scatters without atomics), and the nodes and faces of
+// the named sides.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fem/basis.hpp"
+#include "solid/mesh.hpp"
+
+namespace polymech::solid {
+
+template <int D>
+struct Discretization {
+  int order = 1, n1d = 2;
+  std::array<int, D> cells{}, lattice{};  // cells and nodes per direction
+  std::int64_t nodes = 0;
+  std::vector<double> coordinates;            // nodes x D
+  std::vector<std::int64_t> element_cells;    // storage index -> cell (lattice order)
+  std::vector<std::int64_t> element_nodes;    // storage order, elements x N^D (a = i + N (j + N k))
+  std::vector<std::int64_t> chunk_start;      // first element of each chunk, and the end
+  std::vector<std::int64_t> color_offsets;    // first chunk of each colour, and the end
+
+  int nodes_per_element() const { return D == 3 ? n1d * n1d * n1d : n1d * n1d; }
+  std::int64_t node(const std::array<int, D>& I) const {
+    std::int64_t v = 0;
+    for (int d = D - 1; d >= 0; --d) v = v * lattice[d] + I[d];
+    return v;
+  }
+  std::array<int, D> lattice_index(std::int64_t v) const {
+    std::array<int, D> I;
+    for (int d = 0; d < D; ++d) {
+      I[d] = static_cast<int>(v % lattice[d]);
+      v /= lattice[d];
+    }
+    return I;
+  }
+};
+
+// Chunk edge (cells per direction of a chunk's block): about 8000 element nodes per chunk on the host (the
+// scalar operator's choice, models/helmholtz/element_data.hpp), but at least 32 chunks per thread when the
+// mesh allows; one cell per chunk on a device.
+template <int D>
+int default_chunk_edge(const StructuredMesh<D>& m, int order, int threads, bool device) {
+  if (device) return 1;
+  const double n = order + 1, per_element = D == 3 ? n * n * n : n * n;
+  int b = std::max(1, static_cast<int>(std::pow(8000.0 / per_element, 1.0 / D)));
+  auto chunks = [&](int e) {
+    std::int64_t c = 1;
+    for (int d = 0; d < D; ++d) c *= (m.cells[d] + e - 1) / e;
+    return c;
+  };
+  while (b > 1 && chunks(b) < 32 * threads) --b;
+  return b;
+}
+
+template <int D>
+Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_edge) {
+  if (order < fem::min_order || order > fem::max_order)
+    throw std::invalid_argument("solid: order " + std::to_string(order) + " is not supported; allowed: 1..4");
+  Discretization<D> s;
+  s.order = order;
+  s.n1d = order + 1;
+  s.cells = m.cells;
+  s.nodes = 1;
+  for (int d = 0; d < D; ++d) {
+    s.lattice[d] = order * m.cells[d] + 1;
+    s.nodes *= s.lattice[d];
+  }
+  // node coordinates: the multilinear map of the cell that holds the node (the lowest one), at GLL positions
+  const std::vector<double> gll = fem::gauss_lobatto_nodes(s.n1d);
+  s.coordinates.assign(static_cast<std::size_t>(s.nodes) * D, 0.0);
+  for (std::int64_t v = 0; v < s.nodes; ++v) {
+    const auto I = s.lattice_index(v);
+    std::array<int, D> cell;
+    std::array<double, D> t;  // position in [0, 1] inside the cell, exact at the ends
+    for (int d = 0; d < D; ++d) {
+      cell[d] = std::min(I[d] / order, m.cells[d] - 1);
+      const int a = I[d] - order * cell[d];
+      t[d] = a == 0 ? 0.0 : a == order ? 1.0 : 0.5 * (1.0 + gll[a]);
+    }
+    for (int corner = 0; corner < (1 << D); ++corner) {
+      std::array<int, D> vi;
+      double w = 1.0;
+      for (int d = 0; d < D; ++d) {
+        const int hi = (corner >> d) & 1;
+        vi[d] = cell[d] + hi;
+        w *= hi ? t[d] : 1.0 - t[d];
+      }
+      if (w == 0.0) continue;
+      const std::int64_t vert = m.vertex(vi);
+      for (int d = 0; d < D; ++d)
+        s.coordinates[static_cast<std::size_t>(D * v + d)] += w * m.vertices[static_cast<std::size_t>(D * vert + d)];
+    }
+  }
+  // chunks: blocks of chunk_edge^D cells, coloured by the parity of the block index
+  const int b = std::max(1, chunk_edge);
+  std::array<int, D> blocks;
+  for (int d = 0; d < D; ++d) blocks[d] = (m.cells[d] + b - 1) / b;
+  std::int64_t nblocks = 1;
+  for (int d = 0; d < D; ++d) nblocks *= blocks[d];
+  const int N = s.n1d, ND = s.nodes_per_element();
+  for (int color = 0; color < (1 << D); ++color) {
+    s.color_offsets.push_back(static_cast<std::int64_t>(s.chunk_start.size()));
+    for (std::int64_t k = 0; k < nblocks; ++k) {
+      std::array<int, D> B;
+      std::int64_t r = k;
+      int c = 0;
+      for (int d = 0; d < D; ++d) {
+        B[d] = static_cast<int>(r % blocks[d]);
+        r /= blocks[d];
+        c |= (B[d] % 2) << d;
+      }
+      if (c != color) continue;
+      s.chunk_start.push_back(static_cast<std::int64_t>(s.element_cells.size()));
+      std::array<int, D> lo, hi;
+      for (int d = 0; d < D; ++d) {
+        lo[d] = B[d] * b;
+        hi[d] = std::min(m.cells[d], lo[d] + b);
+      }
+      std::array<int, 3> i{0, 0, 0};
+      for (i[2] = D == 3 ? lo[D - 1] : 0; i[2] < (D == 3 ? hi[D - 1] : 1); ++i[2])
+        for (i[1] = lo[1]; i[1] < hi[1]; ++i[1])
+          for (i[0] = lo[0]; i[0] < hi[0]; ++i[0]) {
+            std::array<int, D> ci;
+            for (int d = 0; d < D; ++d) ci[d] = i[d];
+            std::int64_t cellid = 0;
+            for (int d = D - 1; d >= 0; --d) cellid = cellid * m.cells[d] + ci[d];
+            s.element_cells.push_back(cellid);
+            for (int a = 0; a < ND; ++a) {
+              std::array<int, D> I;
+              int r2 = a;
+              for (int d = 0; d < D; ++d) {
+                I[d] = order * ci[d] + r2 % N;
+                r2 /= N;
+              }
+              s.element_nodes.push_back(s.node(I));
+            }
+          }
+    }
+  }
+  s.chunk_start.push_back(static_cast<std::int64_t>(s.element_cells.size()));
+  s.color_offsets.push_back(static_cast<std::int64_t>(s.chunk_start.size()) - 1);
+  return s;
+}
+
+// Nodes of a named side (every lattice node with index 0 or the last along the side's direction).
+template <int D>
+std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::string& side) {
+  const auto ds = side_of<D>(side);
+  if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
+  std::vector<std::int64_t> out;
+  for (std::int64_t v = 0; v < s.nodes; ++v) {
+    const auto I = s.lattice_index(v);
+    if (I[ds[0]] == (ds[1] ? s.lattice[ds[0]] - 1 : 0)) out.push_back(v);
+  }
+  return out;
+}
+
+// Faces of a named side: faces x N^(D-1) nodes, the other directions in increasing order, lower fastest
+// (the face-lexicographic order of fem::HexFaces).
+template <int D>
+std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::string& side) {
+  const auto ds = side_of<D>(side);
+  if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
+  const int dir = ds[0], p = s.order, N = s.n1d;
+  const int t0 = dir == 0 ? 1 : 0, t1 = D == 3 ? (dir == 2 ? 1 : 2) : -1;
+  std::vector<std::int64_t> out;
+  const int fixed = ds[1] ? s.lattice[dir] - 1 : 0;
+  const int n0 = s.cells[t0], n1 = D == 3 ? s.cells[t1] : 1;
+  for (int c1 = 0; c1 < n1; ++c1)
+    for (int c0 = 0; c0 < n0; ++c0)
+      for (int b = 0; b < (D == 3 ? N : 1); ++b)
+        for (int a = 0; a < N; ++a) {
+          std::array<int, D> I;
+          I[dir] = fixed;
+          I[t0] = p * c0 + a;
+          if constexpr (D == 3) I[t1] = p * c1 + b;
+          out.push_back(s.node(I));
+        }
+  return out;
+}
+
+}  // namespace polymech::solid

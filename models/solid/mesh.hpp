@@ -1,0 +1,132 @@
+// Structured meshes of the solid model (issue 34): a logically Cartesian lattice of (n_0 + 1) x ... vertices
+// in D = 2 or 3 dimensions, each cell a quadrilateral or hexahedron whose map is the multilinear
+// interpolation of its 2^D vertices (so the isoparametric element of any order represents it exactly and the
+// patch test holds with Q = N Gauss points: the integrand det J dN/dx of a multilinear map is a polynomial the
+// rule integrates exactly). The sides are named xmin, xmax, ymin, ymax (zmin, zmax) after the lattice
+// directions. Generators: a box or rectangle, with an optional random or smooth interior distortion; Cook's
+// membrane; a slender cantilever (a box).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polymech::solid {
+
+template <int D>
+struct StructuredMesh {
+  std::array<int, D> cells{};      // cells per lattice direction
+  std::vector<double> vertices;    // vertex_count x D, lattice order (direction 0 fastest)
+
+  std::int64_t vertex_count() const {
+    std::int64_t n = 1;
+    for (int d = 0; d < D; ++d) n *= cells[d] + 1;
+    return n;
+  }
+  std::int64_t cell_count() const {
+    std::int64_t n = 1;
+    for (int d = 0; d < D; ++d) n *= cells[d];
+    return n;
+  }
+  std::int64_t vertex(const std::array<int, D>& i) const {
+    std::int64_t v = 0;
+    for (int d = D - 1; d >= 0; --d) v = v * (cells[d] + 1) + i[d];
+    return v;
+  }
+};
+
+// Side name -> (lattice direction, 0 for the low side or 1 for the high one); -1 if unknown.
+template <int D>
+inline std::array<int, 2> side_of(const std::string& name) {
+  static const char* names[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+  for (int s = 0; s < 2 * D; ++s)
+    if (name == names[s]) return {s / 2, s % 2};
+  return {-1, -1};
+}
+
+enum class Distortion {
+  none,    // the affine lattice
+  random,  // every interior vertex moved by up to `amplitude` cell sizes per direction (reproducible)
+  smooth,  // interior vertices moved by amplitude h sin(pi s_0) ... (a smooth curvilinear lattice)
+};
+
+struct BoxSpec {
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+  std::array<double, 3> lengths{1.0, 1.0, 1.0};
+  std::array<int, 3> cells{4, 4, 4};
+  Distortion distortion = Distortion::none;
+  double amplitude = 0.0;  // in cell sizes; < 0.5 keeps random cells valid, the model checks det J
+  std::uint32_t seed = 1;
+};
+
+namespace detail {
+inline double lattice_hash(std::uint32_t x) {  // in [-1, 1]
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return 2.0 * (static_cast<double>(x) / 4294967295.0) - 1.0;
+}
+}  // namespace detail
+
+// The box [origin, origin + lengths] in D dimensions (the first D entries of the spec).
+template <int D>
+StructuredMesh<D> make_box(const BoxSpec& s) {
+  StructuredMesh<D> m;
+  for (int d = 0; d < D; ++d) {
+    if (s.cells[d] < 1) throw std::invalid_argument("solid box: cell counts must be >= 1");
+    if (!(s.lengths[d] > 0)) throw std::invalid_argument("solid box: lengths must be > 0");
+    m.cells[d] = s.cells[d];
+  }
+  m.vertices.resize(static_cast<std::size_t>(m.vertex_count()) * D);
+  const double pi = 3.14159265358979323846;
+  for (std::int64_t v = 0; v < m.vertex_count(); ++v) {
+    std::array<int, D> i;
+    std::int64_t r = v;
+    for (int d = 0; d < D; ++d) {
+      i[d] = static_cast<int>(r % (m.cells[d] + 1));
+      r /= m.cells[d] + 1;
+    }
+    bool interior = true;
+    double bump = 1.0;  // prod_d sin(pi s_d): zero on the boundary
+    for (int d = 0; d < D; ++d) {
+      interior = interior && i[d] > 0 && i[d] < m.cells[d];
+      bump *= std::sin(pi * i[d] / m.cells[d]);
+    }
+    for (int d = 0; d < D; ++d) {
+      const double h = s.lengths[d] / m.cells[d];
+      double x = s.origin[d] + h * i[d];
+      if (interior && s.distortion == Distortion::random)
+        x += s.amplitude * h * detail::lattice_hash(static_cast<std::uint32_t>(D * v + d) * 2654435761u + s.seed);
+      if (s.distortion == Distortion::smooth)  // each direction displaced along another's sine
+        x += s.amplitude * h * bump * std::cos(pi * i[(d + 1) % D] / m.cells[(d + 1) % D]);
+      m.vertices[static_cast<std::size_t>(D * v + d)] = x;
+    }
+  }
+  return m;
+}
+
+// Cook's membrane (Cook 1974): the quadrilateral (0, 0), (48, 44), (48, 60), (0, 44) as the bilinear image
+// of the unit square, n x n cells; xmin is the clamped edge, xmax the loaded one.
+inline StructuredMesh<2> make_cook_membrane(int n) {
+  if (n < 1) throw std::invalid_argument("cook membrane: n must be >= 1");
+  StructuredMesh<2> m;
+  m.cells = {n, n};
+  m.vertices.resize(static_cast<std::size_t>(m.vertex_count()) * 2);
+  const double P[4][2] = {{0, 0}, {48, 44}, {48, 60}, {0, 44}};
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
+      const double w[4] = {(1 - s) * (1 - t), s * (1 - t), s * t, (1 - s) * t};
+      for (int d = 0; d < 2; ++d)
+        m.vertices[static_cast<std::size_t>(2 * m.vertex({i, j}) + d)] =
+            w[0] * P[0][d] + w[1] * P[1][d] + w[2] * P[2][d] + w[3] * P[3][d];
+    }
+  return m;
+}
+
+}  // namespace polymech::solid
