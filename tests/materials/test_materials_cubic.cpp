@@ -9,17 +9,15 @@
 
 #include "core/types.hpp"
 #include "materials/cubic_elastic.hpp"
+#include "material_fixtures.hpp"
 
 namespace pm = polymech;
 namespace mt = polymech::materials;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-// The paper's six beam-axis angles from [001] in the (110) plane; 54.7356 deg is exactly [1-11].
-const double kAnglesDeg[6] = {0.0, 5.0, 10.0, 20.0, 30.0, 54.735610317245345};
-
-double rad(double deg) { return deg * kPi / 180.0; }
+using pm::testing::rad;
+const auto& kAnglesDeg = pm::testing::kBeamAnglesDeg;
 
 double max_abs(const mt::Stiffness6<double>& A) {
   double m = 0;
@@ -129,14 +127,9 @@ TEST(CubicElastic, IsotropicCrystalIsRotationInvariant) {
     EXPECT_LT(max_abs_difference(mt::rotated_cubic_stiffness(k, mt::cantilever_rotation(rad(deg))), C),
               1e-12 * k.C11);
   }
-  // A rotation about an axis that is not a beam rotation: 0.7 rad about (1, 2, 3)/sqrt14 (Rodrigues).
-  const double w[3] = {1 / std::sqrt(14.0), 2 / std::sqrt(14.0), 3 / std::sqrt(14.0)}, a = 0.7;
-  pm::Mat3<double> Q;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double eps = (i == j) ? 0.0 : ((j - i + 3) % 3 == 1 ? -1.0 : 1.0) * w[3 - i - j];
-      Q.a[i][j] = (i == j ? std::cos(a) : 0.0) + (1 - std::cos(a)) * w[i] * w[j] + std::sin(a) * eps;
-    }
+  // A rotation about an axis that is not a beam rotation: 0.7 rad about (1, 2, 3)/sqrt14.
+  const double w[3] = {1 / std::sqrt(14.0), 2 / std::sqrt(14.0), 3 / std::sqrt(14.0)};
+  const auto Q = pm::testing::axis_angle_rotation(w, 0.7);
   EXPECT_NEAR(pm::det(Q), 1.0, 1e-14);
   EXPECT_LT(max_abs_difference(mt::rotate_stiffness(C, Q), C), 1e-12 * k.C11);
   // The anisotropic crystal is not: its rotated C11 changes by tens of percent.

@@ -12,15 +12,15 @@
 
 #include "core/types.hpp"
 #include "materials/hill_plasticity.hpp"
+#include "material_fixtures.hpp"
 
 namespace pm = polymech;
 namespace mt = polymech::materials;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-const double kAnglesDeg[6] = {0.0, 5.0, 10.0, 20.0, 30.0, 54.735610317245345};
-double rad(double deg) { return deg * kPi / 180.0; }
+using pm::testing::rad;
+const auto& kAnglesDeg = pm::testing::kBeamAnglesDeg;
 
 // 8YSZ elastic constants (GPa) with plastic parameters of the size the paper estimates (GPa).
 mt::CubicHillParameters<double> crystal(double R12, double n = 0.3,

@@ -8,6 +8,7 @@
 
 #include "core/types.hpp"
 #include "materials/hyperelastic.hpp"
+#include "material_fixtures.hpp"
 
 namespace pm = polymech;
 namespace mt = polymech::materials;
@@ -127,14 +128,8 @@ TEST(Hyperelastic, ReferenceStateIsLinearIsotropicElasticity) {
 }
 
 TEST(Hyperelastic, Objectivity) {
-  // R: 0.9 rad about (2, -1, 2)/3 (Rodrigues).
-  const double w[3] = {2.0 / 3, -1.0 / 3, 2.0 / 3}, t = 0.9;
-  M3 R;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double eps = (i == j) ? 0.0 : ((j - i + 3) % 3 == 1 ? -1.0 : 1.0) * w[3 - i - j];
-      R.a[i][j] = (i == j ? std::cos(t) : 0.0) + (1 - std::cos(t)) * w[i] * w[j] + std::sin(t) * eps;
-    }
+  const double w[3] = {2.0 / 3, -1.0 / 3, 2.0 / 3};
+  const M3 R = pm::testing::axis_angle_rotation(w, 0.9);
   ASSERT_NEAR(pm::det(R), 1.0, 1e-14);
   for (const auto& law : kLaws)
     for (const auto& F : kDeformations) {
