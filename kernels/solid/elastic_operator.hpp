@@ -116,14 +116,7 @@ KOKKOS_FORCEINLINE_FUNCTION void point_stress(const LawBatch& law, int q, const 
       H[c][j] = s;
     }
   P eps[S], sig[S];
-  for (int i = 0; i < D; ++i) eps[i] = H[i][i];
-  if constexpr (D == 3) {
-    eps[3] = H[1][2] + H[2][1];
-    eps[4] = H[0][2] + H[2][0];
-    eps[5] = H[0][1] + H[1][0];
-  } else {
-    eps[2] = H[0][1] + H[1][0];
-  }
+  voigt_strain<D>(H, eps);
   law.stress(q, eps, sig);
   for (int c = 0; c < D; ++c) {
     P ws[D];
@@ -148,9 +141,7 @@ void apply_batches(const char* label, const SolidElements<T, D>& el, const Law& 
   const K k;
   const auto dofs = el.cells.dofs;
   const auto mask = el.fixed_mask;
-  const auto affine = el.affine;
-  const auto geometry = el.geometry;
-  const auto slot = el.geometry_slot;
+  const GeometryViews<T, D> geo(el);
   fem::parallel_for_batches(label, el.cells, KOKKOS_LAMBDA(const Index e0, const int count, const int next) {
     P a[ND], t[ND], g[D][D][QD];
     const Index* idx[E];
@@ -172,20 +163,20 @@ void apply_batches(const char* label, const SolidElements<T, D>& el, const Law& 
         fem::prefetch<true>(&y(D * node));
       }
     const auto lb = law.template batch<D, E, P>(e0, count);
-    const Index row = slot(e0);
+    const Index row = geo.slot(e0);
     if (row < 0) {  // affine: J^-1 and det J of each element, the weight of each point
       P Ji[D][D];
       for (int r = 0; r < D; ++r)
         for (int j = 0; j < D; ++j)
-          Ji[r][j] = fem::detail::element_lanes<E, 1, P>(count, [&](int l) { return affine(e0 + l, D * r + j); });
-      const P det = fem::detail::element_lanes<E, 1, P>(count, [&](int l) { return affine(e0 + l, D * D); });
+          Ji[r][j] = fem::detail::element_lanes<E, 1, P>(count, [&](int l) { return geo.affine(e0 + l, D * r + j); });
+      const P det = fem::detail::element_lanes<E, 1, P>(count, [&](int l) { return geo.affine(e0 + l, D * D); });
       for (int q = 0; q < QD; ++q) {
         T wq = k.w[q % Q] * k.w[(q / Q) % Q];
         if constexpr (D == 3) wq *= k.w[q / (Q * Q)];
         point_stress<D, QD>(lb, q, Ji, wq * det, g);
       }
     } else {
-      const T* Gp = &geometry(row, 0);
+      const T* Gp = &geo.geometry(row, 0);
       for (int q = 0; q < QD; ++q) {
         P Ji[D][D];
         for (int r = 0; r < D; ++r)
@@ -227,13 +218,10 @@ void add_diagonal(const SolidElements<T, D>& el, const View1<T>& diag) {
     }
   const auto dofs = el.cells.dofs;
   const auto mask = el.fixed_mask;
-  const auto affine = el.affine;
-  const auto geometry = el.geometry;
-  const auto slot = el.geometry_slot;
   const auto material = el.material;
-  const int B = el.cells.batch;
+  const GeometryViews<T, D> geo(el);
   fem::parallel_for_batches("polymech::solid::elastic_diagonal", el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
-    const Index row = slot(e0);
+    const Index row = geo.slot(e0);
     for (int l = 0; l < count; ++l) {
       const Index e = e0 + l;
       T C[S][S];
@@ -243,16 +231,8 @@ void add_diagonal(const SolidElements<T, D>& el, const View1<T>& diag) {
         T d[ND], fq[D][D][QD], t1[ND], t2[ND];
         for (int a = 0; a < ND; ++a) d[a] = T(0);
         for (int q = 0; q < QD; ++q) {
-          T Ji[D][D], wdet;
-          if (row < 0) {
-            for (int v = 0; v < D * D; ++v) Ji[v / D][v % D] = affine(e, v);
-            T wq = b.w[q % Q] * b.w[(q / Q) % Q];
-            if constexpr (D == 3) wq *= b.w[q / (Q * Q)];
-            wdet = wq * affine(e, D * D);
-          } else {
-            for (int v = 0; v < D * D; ++v) Ji[v / D][v % D] = geometry(row, (v * QD + q) * B + l);
-            wdet = geometry(row, (D * D * QD + q) * B + l);
-          }
+          T Ji[D][D];
+          const T wdet = geo.template at<Q>(row, e0, l, q, b.w, Ji);
           for (int r = 0; r < D; ++r)
             for (int s = 0; s < D; ++s) {
               T sum = T(0);

@@ -62,6 +62,33 @@ struct SolidElements {
   Index dof_count() const { return D * nodes; }
 };
 
+// The geometry as the kernels capture it (Views only).
+template <class T, int D>
+struct GeometryViews {
+  Kokkos::View<T**, Kokkos::LayoutRight, MemSpace> affine, geometry;
+  View1<Index> slot;
+  int batch = 1;
+
+  GeometryViews() = default;
+  explicit GeometryViews(const SolidElements<T, D>& el)
+      : affine(el.affine), geometry(el.geometry), slot(el.geometry_slot), batch(el.cells.batch) {}
+
+  // J^-1 (into Ji) and the returned w det J at point q of lane l of the batch that starts at e0, whose row
+  // is slot(e0); w: the 1D Gauss weights of the Q-point rule.
+  template <int Q, class W>
+  KOKKOS_INLINE_FUNCTION T at(Index row, Index e0, int l, int q, const W& w, T (&Ji)[D][D]) const {
+    constexpr int QD = power<D>(Q);
+    if (row >= 0) {
+      for (int v = 0; v < D * D; ++v) Ji[v / D][v % D] = geometry(row, (v * QD + q) * batch + l);
+      return geometry(row, (D * D * QD + q) * batch + l);
+    }
+    for (int v = 0; v < D * D; ++v) Ji[v / D][v % D] = affine(e0 + l, v);
+    T wq = w[q % Q] * w[(q / Q) % Q];
+    if (D == 3) wq *= w[q / (Q * Q)];
+    return wq * affine(e0 + l, D * D);
+  }
+};
+
 // Node coordinates of a solid mesh, double: [nodes][D].
 template <int D>
 using NodeCoordinates = Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>;

@@ -20,6 +20,19 @@ KOKKOS_INLINE_FUNCTION constexpr int pair_index(int i, int j) {
   return i == j ? i : (D == 3 ? 6 - i - j : 2);
 }
 
+// The reduced Voigt strain (engineering shears) of a displacement gradient H[c][j] = du_c / dx_j.
+template <int D, class V>
+KOKKOS_FORCEINLINE_FUNCTION void voigt_strain(const V (&H)[D][D], V (&eps)[strain_components<D>]) {
+  for (int i = 0; i < D; ++i) eps[i] = H[i][i];
+  if constexpr (D == 3) {
+    eps[3] = H[1][2] + H[2][1];
+    eps[4] = H[0][2] + H[2][0];
+    eps[5] = H[0][1] + H[1][0];
+  } else {
+    eps[2] = H[0][1] + H[1][0];
+  }
+}
+
 // sigma = C eps with the dense reduced S x S block of C.
 template <int S, class P>
 struct DenseStiffnessBatch {

@@ -46,17 +46,6 @@ Kokkos::View<double***, Kokkos::LayoutRight, MemSpace> quadrature_points(const S
   return out;
 }
 
-// w det J at point q of lane l of the batch at e0 (row = geometry_slot(e0); w the 1D Gauss weights).
-template <class T, int D, int Q, class A, class G, class W>
-KOKKOS_INLINE_FUNCTION T weighted_det(const A& affine, const G& geometry, Index row, Index e0, int l, int q, int batch,
-                                      const W& w) {
-  constexpr int QD = power<D>(Q);
-  if (row >= 0) return geometry(row, (D * D * QD + q) * batch + l);
-  T wq = w[q % Q] * w[(q / Q) % Q];
-  if (D == 3) wq *= w[q / (Q * Q)];
-  return wq * affine(e0 + l, D * D);
-}
-
 namespace detail {
 
 // Nodal values from the weighted values at the points (B^T along every direction; Q = N).
@@ -74,18 +63,14 @@ void add_body_force(const SolidElements<T, D>& el, const Kokkos::View<double***,
   constexpr int Q = N, ND = power<D>(N);
   const fem::HexBasis<T, N, Q> b = fem::make_hex_basis<T, N, Q>();
   const auto dofs = el.cells.dofs;
-  const auto affine = el.affine;
-  const auto geometry = el.geometry;
-  const auto slot = el.geometry_slot;
-  const int B = el.cells.batch;
+  const GeometryViews<T, D> geo(el);
   fem::parallel_for_batches("polymech::solid::body_force", el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
-    const Index row = slot(e0);
+    const Index row = geo.slot(e0);
     for (int l = 0; l < count; ++l) {
       const Index e = e0 + l;
       for (int c = 0; c < D; ++c) {
-        T v[ND], r[ND], t1[ND], t2[ND];
-        for (int q = 0; q < ND; ++q)
-          v[q] = weighted_det<T, D, Q>(affine, geometry, row, e0, l, q, B, b.w) * static_cast<T>(body(e, q, c));
+        T v[ND], r[ND], t1[ND], t2[ND], Ji[D][D];
+        for (int q = 0; q < ND; ++q) v[q] = geo.template at<Q>(row, e0, l, q, b.w, Ji) * static_cast<T>(body(e, q, c));
         integrate_element<D, N>(b.B, v, r, t1, t2);
         for (int a = 0; a < ND; ++a) f(D * fem::decode_dof(dofs(e, a)) + c) += r[a];
       }

@@ -196,14 +196,7 @@ std::vector<double> quadrature_stresses(const LinearElastic<T, D>& m) {
         for (int c = 0; c < D; ++c)
           for (int j = 0; j < D; ++j) H[c][j] += u[static_cast<std::size_t>(D * en[a] + c)] * p.dN[static_cast<std::size_t>(a) * D + j];
       double eps[S];
-      for (int i = 0; i < D; ++i) eps[i] = H[i][i];
-      if constexpr (D == 3) {
-        eps[3] = H[1][2] + H[2][1];
-        eps[4] = H[0][2] + H[2][0];
-        eps[5] = H[0][1] + H[1][0];
-      } else {
-        eps[2] = H[0][1] + H[1][0];
-      }
+      voigt_strain<D>(H, eps);
       for (int i = 0; i < S; ++i) {
         double s = 0.0;
         for (int j = 0; j < S; ++j) s += static_cast<double>(mat(e, 6 * voigt_component<D>(i) + voigt_component<D>(j))) * eps[j];
