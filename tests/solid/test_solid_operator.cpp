@@ -1,7 +1,8 @@
 // The matrix-free solid operator against the assembled matrix, and the patch test (issue 34).
 //  - K x matrix-free (sum factorization, batched, affine and general geometry paths) equals the assembled
 //    matrix (full basis at the Gauss points, solid/assembly.hpp) times x, orders 1..4, 2D and 3D, with a
-//    general anisotropic C and Dirichlet rows; the Jacobi diagonal equals the matrix's.
+//    general anisotropic C and Dirichlet rows; the Jacobi diagonal equals the matrix's; the same C given per
+//    quadrature point (the tangent path of a nonlinear law, PointStiffness) gives the same K x.
 //  - Patch test: a linear displacement field prescribed on the whole boundary of a randomly distorted mesh
 //    is reproduced at every node to round-off (sparse LU and CG), and the stress at every Gauss point is
 //    C eps of that field; orders 1..4, plane strain, plane stress and 3D.
@@ -74,6 +75,25 @@ void check_against_assembled(int order, bool distorted) {
     EXPECT_GT(m.elements().general_batches, 0);
   else
     EXPECT_EQ(m.elements().general_batches, 0);
+  // the tangent path of a nonlinear law: the same C given per quadrature point (PointStiffness) gives K x
+  {
+    const auto mat = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), m.elements().material);
+    const int QD = D == 3 ? (order + 1) * (order + 1) * (order + 1) : (order + 1) * (order + 1);
+    so::PointStiffness<double> law{Kokkos::View<double***, Kokkos::LayoutRight, pm::MemSpace>("tangent", m.element_count(), QD, 36)};
+    auto th = Kokkos::create_mirror_view(law.tangent);
+    for (pm::Index e = 0; e < m.element_count(); ++e)
+      for (int q = 0; q < QD; ++q)
+        for (int k = 0; k < 36; ++k) th(e, q, k) = mat(e, k);
+    Kokkos::deep_copy(law.tangent, th);
+    pm::View1<double> w("w", n), v("v", n);
+    so::add_internal_force<true>("test::tangent", m.elements(), law, x, w);
+    so::add_elastic_apply<true>(m.elements(), x, v);
+    const auto wh = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), w);
+    const auto vh = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), v);
+    double d = 0.0;
+    for (pm::Index i = 0; i < n; ++i) d = std::max(d, std::abs(wh(i) - vh(i)));
+    EXPECT_LT(d, 1e-13 * scale) << "per-point tangent, D " << D << " order " << order;
+  }
   // Jacobi: the inverse diagonal is 1 / diag(K)
   const auto inv = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), m.op().inverse_diagonal());
   const auto rp = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), K.row_ptr);
