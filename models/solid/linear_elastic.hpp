@@ -60,6 +60,14 @@ class LinearElastic {
     return solvers::cg(op_, inv_diag_, rhs_, u_, o);
   }
 
+  // r = f_int(u) - f_ext off the constrained rows, zero on them: the residual a Newton driver drives to zero
+  // (for this linear law f_int(u) = K u; u carries the Dirichlet values on the constrained DoFs).
+  void residual(const View1<T>& u, const View1<T>& r) const {
+    solvers::scale(dof_count(), T(-1), f_ext_, r);
+    add_internal_force<false>("polymech::solid::internal_force", op_.el, ElementStiffness<T>{op_.el.material}, u, r);
+    fem::fill_constrained(op_.constrained, T(0), r);
+  }
+
   // The assembled constrained matrix, in double on the host (rows and columns of constrained DoFs: identity).
   Triplets assemble() const {
     AssemblyInput in;

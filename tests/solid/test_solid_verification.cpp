@@ -79,11 +79,22 @@ TEST(SolidCantilever, TipDeflectionAgainstTimoshenko) {
     o.tolerance = 1e-8;  // 1e-9: the attainable accuracy of double for p = 3 (condition number ~ (L / h)^2 p^4)
     const auto r = m.solve_cg(o);
     ASSERT_TRUE(r.converged()) << r.reason;
+    // the residual r(u) = f_int(u) - f_ext of the solution vanishes to the solver's tolerance
+    pm::View1<double> res("r", m.dof_count());
+    m.residual(m.displacement(), res);
+    const auto rh = pm::models::to_host(res), fh = pm::models::to_host(m.external_force());
+    double rn = 0.0, fn = 0.0;
+    for (std::size_t i = 0; i < rh.size(); ++i) {
+      rn += rh[i] * rh[i];
+      fn += fh[i] * fh[i];
+    }
+    EXPECT_LT(std::sqrt(rn / fn), 1e-7) << "p " << p;
     const double tip = so::displacement_at(m, {s.length, 0.5 * s.height, 0.5 * s.width})[1];
-    std::printf("cantilever p=%d cells %dx%dx%d: tip %.6f, Timoshenko %.6f, Euler-Bernoulli %.6f, relative %.2e (%d CG iterations)\n",
+    std::printf("cantilever p=%d cells %dx%dx%d: tip %.6f, Timoshenko %.6f, Euler-Bernoulli %.6f, relative %.2e (%d CG "
+                "iterations, |r(u)| / |f_ext| %.1e)\n",
                 p, s.cells[0], s.cells[1], s.cells[2], tip, beam,
                 s.force * s.length * s.length * s.length / (3 * s.young * s.width * s.height * s.height * s.height / 12),
-                tip / beam - 1.0, r.iterations);
+                tip / beam - 1.0, r.iterations, std::sqrt(rn / fn));
     // measured -7.4e-5 (p = 2); Euler-Bernoulli alone would be 1.5e-3 off
     EXPECT_NEAR(tip / beam, 1.0, 5e-4);
   }
