@@ -66,7 +66,8 @@ void BM_ElasticApply(benchmark::State& state) {
 }
 
 // About 1e6 DoFs for every order: 3 (p n + 1)^3.
-#define POLYMECH_SOLID_SIZES(d) ->Args({1, 69, d})->Args({2, 35, d})->Args({3, 23, d})->Args({4, 17, d})->Unit(benchmark::kMillisecond)
+#define POLYMECH_SOLID_SIZES(d) \
+  ->Args({1, 69, d})->Args({2, 35, d})->Args({3, 23, d})->Args({4, 17, d})->Unit(benchmark::kMillisecond)
 BENCHMARK_TEMPLATE(BM_ElasticApply, double) POLYMECH_SOLID_SIZES(0);
 BENCHMARK_TEMPLATE(BM_ElasticApply, double) POLYMECH_SOLID_SIZES(1);
 BENCHMARK_TEMPLATE(BM_ElasticApply, float) POLYMECH_SOLID_SIZES(0);
@@ -78,7 +79,8 @@ void BM_HelmholtzApply(benchmark::State& state) {
   hz::BoxSpec b;
   b.elements = {static_cast<int>(state.range(1)), static_cast<int>(state.range(1)), static_cast<int>(state.range(1))};
   c.mesh = hz::make_box_mesh(b);
-  for (const char* f : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) c.boundaries.push_back({f, hz::BoundaryKind::dirichlet});
+  for (const char* f : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"})
+    c.boundaries.push_back({f, hz::BoundaryKind::dirichlet});
   c.analytic.kind = hz::AnalyticKind::plane_cosines;
   c.effects = pm::EffectSet::resolve({"dirichlet"}, hz::Helmholtz<double>::effects());
   hz::Helmholtz<double> m(c);

@@ -220,7 +220,8 @@ void add_diagonal(const SolidElements<T, D>& el, const View1<T>& diag) {
   const auto mask = el.fixed_mask;
   const auto material = el.material;
   const GeometryViews<T, D> geo(el);
-  fem::parallel_for_batches("polymech::solid::elastic_diagonal", el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
+  const char* label = "polymech::solid::elastic_diagonal";
+  fem::parallel_for_batches(label, el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
     const Index row = geo.slot(e0);
     for (int l = 0; l < count; ++l) {
       const Index e = e0 + l;

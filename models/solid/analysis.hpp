@@ -194,12 +194,14 @@ std::vector<double> quadrature_stresses(const LinearElastic<T, D>& m) {
       double H[D][D] = {};
       for (int a = 0; a < ND; ++a)
         for (int c = 0; c < D; ++c)
-          for (int j = 0; j < D; ++j) H[c][j] += u[static_cast<std::size_t>(D * en[a] + c)] * p.dN[static_cast<std::size_t>(a) * D + j];
+          for (int j = 0; j < D; ++j)
+            H[c][j] += u[static_cast<std::size_t>(D * en[a] + c)] * p.dN[static_cast<std::size_t>(a) * D + j];
       double eps[S];
       voigt_strain<D>(H, eps);
       for (int i = 0; i < S; ++i) {
         double s = 0.0;
-        for (int j = 0; j < S; ++j) s += static_cast<double>(mat(e, 6 * voigt_component<D>(i) + voigt_component<D>(j))) * eps[j];
+        for (int j = 0; j < S; ++j)
+          s += static_cast<double>(mat(e, 6 * voigt_component<D>(i) + voigt_component<D>(j))) * eps[j];
         out.push_back(s);
       }
     }

@@ -30,7 +30,8 @@ inline Config<2> cook_membrane(const CookSpec& s) {
 }
 
 // References for the top-right vertical displacement u, as u E / F (E = 1, F = 1; linear in F / E):
-//  - plane stress: CalculiX 2.20 (Debian calculix-ccx), CPS8 on the same bilinear meshes, run for issue 34:
+//  - plane stress: CalculiX 2.20 (Debian calculix-ccx), CPS8 on the same bilinear meshes
+//    (bench/peers/calculix/cook_membrane.py):
 //    24.9012 (8 x 8), 25.0579 (16), 25.1227 (32), 25.1513 (64), Richardson limit about 25.175. The value
 //    23.96 quoted for this case (Cook 1989 §6.13; Belytschko et al. 2014 Table 8.1) is 4.8 % below it and
 //    below what these meshes converge to: it is not reproduced (docs/VALIDATION.md);

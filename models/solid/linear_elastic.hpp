@@ -112,8 +112,9 @@ class LinearElastic {
  private:
   void set_up_elements() {
     const bool device = !Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible;
-    const int edge = config_.chunk_edge > 0 ? config_.chunk_edge
-                                            : default_chunk_edge(config_.mesh, config_.order, kx::concurrency<ExecSpace>(), device);
+    const int threads = kx::concurrency<ExecSpace>();
+    const int edge =
+        config_.chunk_edge > 0 ? config_.chunk_edge : default_chunk_edge(config_.mesh, config_.order, threads, device);
     disc_ = discretize(config_.mesh, config_.order, edge);
     auto& el = op_.el;
     el.cells.order = config_.order;

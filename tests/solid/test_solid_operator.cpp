@@ -79,7 +79,8 @@ void check_against_assembled(int order, bool distorted) {
   {
     const auto mat = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), m.elements().material);
     const int QD = D == 3 ? (order + 1) * (order + 1) * (order + 1) : (order + 1) * (order + 1);
-    so::PointStiffness<double> law{Kokkos::View<double***, Kokkos::LayoutRight, pm::MemSpace>("tangent", m.element_count(), QD, 36)};
+    so::PointStiffness<double> law{
+        Kokkos::View<double***, Kokkos::LayoutRight, pm::MemSpace>("tangent", m.element_count(), QD, 36)};
     auto th = Kokkos::create_mirror_view(law.tangent);
     for (pm::Index e = 0; e < m.element_count(); ++e)
       for (int q = 0; q < QD; ++q)

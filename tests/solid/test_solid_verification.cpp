@@ -132,7 +132,7 @@ TEST(SolidCook, PlaneStressConvergedInMeshAndOrder) {
   for (std::size_t k = 2; k < p4.size(); ++k) EXPECT_GT((p4[k - 1] - p4[k - 2]) / (p4[k] - p4[k - 1]), 1.5);
   std::printf("cook plane stress: order 4 Richardson limit u E / F = %.4f; CalculiX 2.20 CPS8 64x64 25.1513 (limit "
               "~25.175); the often-quoted 23.96 is %.1f %% below\n", limit / scale, 100.0 * (1.0 - 23.96 / (limit / scale)));
-  // CalculiX 2.20 (Debian calculix-ccx), CPS8 on the same bilinear meshes, E = 1, F = 1: 24.9012 (8 x 8), 25.0579
+  // CalculiX 2.20 (bench/peers/calculix/cook_membrane.py), CPS8 on the same meshes, E = 1, F = 1: 24.9012 (8 x 8), 25.0579
   // (16), 25.1227 (32), 25.1513 (64); its Richardson limit 25.175. Ours measured: see docs/VALIDATION.md.
   EXPECT_NEAR(p4.back() / scale, 25.175, 0.05);
   EXPECT_NEAR(limit / scale, 25.175, 0.05);
