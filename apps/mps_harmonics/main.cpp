@@ -22,6 +22,31 @@ namespace me = polymech::mps_elastic;
 
 namespace {
 
+// Before the run (also for --dry-run): the record must hold the harmonics probe's analysis window, or the
+// run's time is spent for nothing (issue 33 item 3); probes whose own window does not fit are named.
+void check_record_length(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
+  const me::Config& c = scene.config;
+  const auto need = [&](const std::string& probe) { return me::steps_for_harmonic_window(c, probe); };
+  const auto describe = [&](const std::string& probe) {
+    const double arrival = me::burst_arrival(c, me::probe_named(c, probe));
+    char b[256];
+    std::snprintf(b, sizeof b, "the %s burst reaches probe %s at %.3g s and its analysis window ends 3.75 periods later",
+                  c.excitation.kind == me::ExcitationKind::plane_s ? "S" : "P", probe.c_str(), arrival);
+    return std::string(b);
+  };
+  const std::string steps_from = opt.steps > 0 ? "--steps" : "[time].steps at this accuracy";
+  const std::int64_t n = need(scene.harmonics_probe);
+  if (c.steps < n)
+    throw pm::io::SceneError(opt.scene.string() + ": " + steps_from + " = " + std::to_string(c.steps) + " records " +
+                             pm::models::format_g(static_cast<double>(c.steps) * c.dt) + " s, but " +
+                             describe(scene.harmonics_probe) + ": needs at least " + std::to_string(n) +
+                             " steps (--steps " + std::to_string(n) + ")");
+  for (const auto& p : c.probes)
+    if (p.name != scene.harmonics_probe && c.steps < need(p.name) && !opt.quiet)
+      std::fprintf(stderr, "mps_harmonics: note: %s: the ratios at probe %s are left out (%lld steps needed)\n",
+                   describe(p.name).c_str(), p.name.c_str(), static_cast<long long>(need(p.name)));
+}
+
 template <class T>
 int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt) {
   const me::Config& c = scene.config;
@@ -85,13 +110,15 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   const auto& ra = res.ratios_intact;
   const auto& rb = res.ratios_crack;
   const double f0 = res.f0;
-  const double a1_intact = pm::analysis::harmonic_amplitudes(sa, f0, 1)[0];
-  const double a1_crack = pm::analysis::harmonic_amplitudes(sb, f0, 1)[0];
+  // a failed analysis (issue 33 item 3) leaves the ratios and spectra empty; the records are written all the same
+  const bool analysed = res.analysis_error.empty();
 
   const std::string comp = scene.harmonics_component;
   pm::io::write_csv(cs.out() / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
                     pm::io::Columns{b.times, b.signal, a.signal});
-  {
+  if (analysed) {
+    const double a1_intact = pm::analysis::harmonic_amplitudes(sa, f0, 1)[0];
+    const double a1_crack = pm::analysis::harmonic_amplitudes(sb, f0, 1)[0];
     std::vector<double> f, xa, xb;
     for (std::size_t k = 0; k < sa.frequency.size() && sa.frequency[k] <= 6.0 * f0; ++k) {
       f.push_back(sa.frequency[k]);
@@ -131,13 +158,14 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["probe"] = scene.harmonics_probe;
   j["component"] = comp;
   j["harmonics"] = {1, 2, 3, 4, 5};
-  j["ratios_crack"] = rb;
-  j["ratios_intact"] = ra;
+  if (!analysed) j["analysis_error"] = res.analysis_error;
+  j["ratios_crack"] = analysed ? nlohmann::json(rb) : nlohmann::json(nullptr);
+  j["ratios_intact"] = analysed ? nlohmann::json(ra) : nlohmann::json(nullptr);
   j["ratios_method"] = "A_n/A_1 from the Fourier coefficients at n f0 over 3 drive periods of the steady transmitted "
                        "burst (window_start .. + 3 T), the same window for both runs";
-  j["window_start"] = res.window_start;
-  j["spectrum_ratios_crack"] = res.spectrum_ratios_crack;
-  j["spectrum_ratios_intact"] = res.spectrum_ratios_intact;
+  j["window_start"] = analysed ? nlohmann::json(res.window_start) : nlohmann::json(nullptr);
+  j["spectrum_ratios_crack"] = analysed ? nlohmann::json(res.spectrum_ratios_crack) : nlohmann::json(nullptr);
+  j["spectrum_ratios_intact"] = analysed ? nlohmann::json(res.spectrum_ratios_intact) : nlohmann::json(nullptr);
   // the same ratios at every probe (how the harmonics fade with the distance from the crack), each in
   // its own steady window
   nlohmann::json per_probe = nlohmann::json::object();
@@ -163,12 +191,17 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["restarts"] = a.stats.restarts + b.stats.restarts;
   pm::apps::put_subnormal_census(j, a.stats, "subnormal_census_intact");
   pm::apps::put_subnormal_census(j, b.stats, "subnormal_census_crack");
-  std::vector<std::string> files = {"summary.json", "time_history.csv", "spectrum.csv", "probes_crack.csv",
-                                    "probes_intact.csv"};
+  std::vector<std::string> files = {"summary.json", "time_history.csv", "probes_crack.csv", "probes_intact.csv"};
+  if (analysed) files.push_back("spectrum.csv");
   if (!b.contact.times.empty()) files.push_back("contact_states.csv");
   if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
   cs.finish(j, files);
 
+  if (!analysed) {
+    std::fprintf(stderr, "mps_harmonics: the analysis failed: %s; the records of both runs are in %s\n",
+                 res.analysis_error.c_str(), cs.out().c_str());
+    return 1;
+  }
   std::printf("harmonics of %s at probe %s (A_n / A_1, n = 1..5):\n", comp.c_str(), scene.harmonics_probe.c_str());
   std::printf("  crack : %.3g %.3g %.3g %.3g %.3g\n", rb[0], rb[1], rb[2], rb[3], rb[4]);
   std::printf("  intact: %.3g %.3g %.3g %.3g %.3g\n", ra[0], ra[1], ra[2], ra[3], ra[4]);
@@ -203,6 +236,7 @@ int main(int argc, char** argv) {
     if (scene.harmonics_probe.empty())
       throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
+    check_record_length(scene, opt);
     if (pm::apps::announce_cost("mps_harmonics", scene.header, scene.cost, opt)) return 0;
     return pm::apps::with_precision(scene.header.precision, [&](auto t) { return run_case<decltype(t)>(scene, opt, ropt); });
   });

@@ -1,7 +1,8 @@
 // The ISPH model's checks on its particles (seed 002 paper 4 has neither): the safety net that puts a
-// particle that left the tank back inside, and the watchdog's search for a particle that moves too fast.
+// particle that left the tank back inside.
 #pragma once
 
+#include "particles/speed_limit.hpp"  // the watchdog's speed check (was here)
 #include "sph/fluid.hpp"
 
 namespace polymech::sph {
@@ -31,22 +32,6 @@ long long keep_inside(const Fluid<T, D>& f, const Vec<T, D>& lo, const Vec<T, D>
       },
       n);
   return n;
-}
-
-// The first particle with |v| > vmax (or a speed that is not a number), or -1.
-template <class T, int D>
-Index first_faster_than(const VecView<T, D>& v, T vmax) {
-  const Index n = static_cast<Index>(v.extent(0));
-  Index first = n;
-  Kokkos::parallel_reduce(
-      "polymech::isph::first_too_fast", range(n),
-      KOKKOS_LAMBDA(const Index i, Index& m) {
-        T s2 = T(0);
-        for (int d = 0; d < D; ++d) s2 += v(i, d) * v(i, d);
-        if (!(s2 <= vmax * vmax) && i < m) m = i;
-      },
-      Kokkos::Min<Index>(first));
-  return first < n ? first : Index(-1);
 }
 
 }  // namespace polymech::sph

@@ -5,9 +5,20 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace polymech::analysis {
+
+namespace {
+// "1.25e-05" style, short enough for a message (std::to_string gives 0.000004 for 4.2e-6)
+std::string format_seconds(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", t);
+  return b;
+}
+}  // namespace
 
 Spectrum amplitude_spectrum(const std::vector<double>& samples, double dt, int pad) {
   const std::size_t n = samples.size();
@@ -54,6 +65,12 @@ std::vector<double> burst_harmonic_amplitudes(const std::vector<double>& t, cons
                                               double t_start, double f0, double periods, int count) {
   if (t.size() != x.size()) throw std::invalid_argument("burst_harmonic_amplitudes: t and x differ in length");
   const double t_end = t_start + periods / f0;
+  // a window that runs past the record would mix the burst with silence: its ratios mean nothing (issue 33)
+  const double sample = t.size() > 1 ? t[1] - t[0] : 0.0;
+  if (t.empty() || t_end > t.back() + 0.5 * sample)
+    throw std::invalid_argument("the window [" + format_seconds(t_start) + ", " + format_seconds(t_end) +
+                                "] s runs past the end of the record (" + format_seconds(t.empty() ? 0.0 : t.back()) +
+                                " s): record more steps");
   std::vector<std::size_t> idx;
   double mean = 0.0;
   for (std::size_t k = 0; k < t.size(); ++k)
@@ -62,8 +79,8 @@ std::vector<double> burst_harmonic_amplitudes(const std::vector<double>& t, cons
       mean += x[k];
     }
   if (idx.size() < 8)
-    throw std::invalid_argument("burst_harmonic_amplitudes: the window [" + std::to_string(t_start) + ", " +
-                                std::to_string(t_end) + "] s holds fewer than 8 samples (record too short?)");
+    throw std::invalid_argument("the window [" + format_seconds(t_start) + ", " + format_seconds(t_end) +
+                                "] s holds fewer than 8 samples: record more often (probe_every)");
   mean /= static_cast<double>(idx.size());
   constexpr double two_pi = 6.283185307179586476925286766559;
   std::vector<double> a(static_cast<std::size_t>(count));

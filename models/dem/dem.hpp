@@ -173,7 +173,14 @@ class Dem {
   // The spheres' total force on the wheel and its moment about the wheel's centre (last step).
   std::array<double, 6> wheel_contact() const { return wheel_drive_.contact(); }
 
-  models::Health health() const { return models::particle_health<T, 3>(s_); }
+  // The watchdog's check: the first sphere whose state is not finite, or that moves more than the
+  // neighbour lists' skin in one step (issue 33 item 2): the lists are rebuilt when a sphere has moved half
+  // the skin, so beyond that contacts are missed and spheres pass through each other or a wall.
+  models::Health health() const {
+    const models::Health h = models::particle_health<T, 3>(s_);
+    if (!h.finite || !(cfg_.dt > 0)) return h;
+    return models::speed_health(s_, skin(cfg_, clump_init_) / cfg_.dt, "the neighbour skin per step (skin / dt)");
+  }
   const models::StateRegistry& state() const { return state_; }
   // Checkpoints (models/common/run.hpp): the registered state, the step and both contact lists with
   // the tangential springs of their pairs (models/common/contact_pairs_archive.hpp): a restarted run

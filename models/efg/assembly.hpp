@@ -127,6 +127,16 @@ inline void Efg<T>::solve_static() {
   if (ldlt.info() != Eigen::Success) throw std::runtime_error("EFG: the stiffness factorisation failed (a rigid-body mode not held?)");
   const Eigen::VectorXd u = ldlt.solve(f);
   if (ldlt.info() != Eigen::Success || !u.allFinite()) throw std::runtime_error("EFG: the static solve failed");
+  // A near-singular stiffness (a rigid-body mode held by one node, MLS moments near singular) factorises
+  // and gives finite garbage: check what was solved (issue 33 item 2). A sound solve left below 1e-6 here
+  // with double shape functions (every static test) and 2.0e-5 with float ones (the penalty-stiffened K of
+  // float entries, solved in double); garbage leaves order 1.
+  const double fn = f.norm();
+  const double residual = fn > 0 ? (K * u - f).norm() / fn : 0.0;
+  if (!(residual <= 1e-3))
+    throw std::runtime_error("EFG: the static solve is not accurate: |K u - f| / |f| = " + models::format_g(residual) +
+                             " (above 1e-3): the stiffness is near singular (supports too small for the node spacing, "
+                             "or a rigid-body mode held by too few nodes)");
   timings_.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
   u_host_.assign(u.data(), u.data() + u.size());
   detail::to_device(u, u_, "polymech::efg::coefficients");

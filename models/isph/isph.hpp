@@ -165,20 +165,7 @@ class Isph {
     // hydrostatic tank reached 3e28 m/s with every solve converged and every value finite). The fastest
     // valid flow seen: 1.8 spacings per step, water squeezed from under the dense body as it lands.
     const double vmax = 10.0 * cfg_.spacing / cfg_.dt;
-    const Index fast = h.finite ? sph::first_faster_than(f_.p.v, T(vmax)) : Index(-1);
-    if (fast >= 0) {
-      const auto x = host_positions();
-      const auto v = host_vec(f_.p.v);
-      double s2 = 0;
-      for (int d = 0; d < D; ++d) {
-        h.position[d] = x[static_cast<std::size_t>(fast) * D + d];
-        s2 += v[static_cast<std::size_t>(fast) * D + d] * v[static_cast<std::size_t>(fast) * D + d];
-      }
-      h.finite = false;
-      h.first_bad = fast;
-      h.problem = "moves at " + models::format_g(std::sqrt(s2)) + " m/s, more than ten spacings per step (10 l0 / dt = " +
-                  models::format_g(vmax) + " m/s)";
-    }
+    if (h.finite) h = models::speed_health(f_.p, vmax, "ten spacings per step (10 l0 / dt)");
     return h;
   }
   const models::StateRegistry& state() const { return state_; }

@@ -38,6 +38,9 @@ struct HarmonicsResult {
   // Spectra of the whole records (Figs. 8, 10) and the ratios read off them (peak within +-10 % of n f0).
   analysis::Spectrum spectrum_intact, spectrum_crack;
   std::vector<double> spectrum_ratios_intact, spectrum_ratios_crack;
+  // Why the analysis of the finished runs failed ("" when it did not): the records are kept and written
+  // all the same (issue 33 item 3); the ratios above are then empty.
+  std::string analysis_error;
 };
 
 // A_n / A_1 of a probe signal over the steady window starting at t_start.
@@ -161,13 +164,19 @@ HarmonicsResult run_harmonics_case(const Config& c, const std::string& probe, in
 
   out.f0 = 1.0 / c.excitation.period;
   const double dt = c.dt * static_cast<double>(c.probe_every);
-  out.window_start = analysis::burst_steady_start(out.intact.times, out.intact.signal, out.f0);
-  out.ratios_intact = burst_ratios(out.intact.times, out.intact.signal, out.window_start, out.f0);
-  out.ratios_crack = burst_ratios(out.crack.times, out.crack.signal, out.window_start, out.f0);
-  out.spectrum_intact = analysis::amplitude_spectrum(out.intact.signal, dt);
-  out.spectrum_crack = analysis::amplitude_spectrum(out.crack.signal, dt);
-  out.spectrum_ratios_intact = analysis::harmonic_ratios(out.spectrum_intact, out.f0, 5, 0.1);
-  out.spectrum_ratios_crack = analysis::harmonic_ratios(out.spectrum_crack, out.f0, 5, 0.1);
+  try {
+    out.window_start = analysis::burst_steady_start(out.intact.times, out.intact.signal, out.f0);
+    out.ratios_intact = burst_ratios(out.intact.times, out.intact.signal, out.window_start, out.f0);
+    out.ratios_crack = burst_ratios(out.crack.times, out.crack.signal, out.window_start, out.f0);
+    out.spectrum_intact = analysis::amplitude_spectrum(out.intact.signal, dt);
+    out.spectrum_crack = analysis::amplitude_spectrum(out.crack.signal, dt);
+    out.spectrum_ratios_intact = analysis::harmonic_ratios(out.spectrum_intact, out.f0, 5, 0.1);
+    out.spectrum_ratios_crack = analysis::harmonic_ratios(out.spectrum_crack, out.f0, 5, 0.1);
+  } catch (const std::invalid_argument& e) {
+    out.analysis_error = "the harmonic analysis at probe " + probe + ": " + e.what();
+    out.ratios_intact.clear();
+    out.ratios_crack.clear();
+  }
   return out;
 }
 
@@ -190,13 +199,25 @@ inline void crop_around_crack(Config& c, double width, double depth, double belo
                  c.probes.end());
 }
 
-// Steps until the plane burst (P or S) from the top row has passed `probe`, with one period to spare.
-inline std::int64_t steps_until_burst_passes(const Config& c, const std::string& probe) {
-  const Probe& a = probe_named(c, probe);
+// The time the plane burst from the top row needs to reach `probe` (P or S wave speed).
+inline double burst_arrival(const Config& c, const Probe& a) {
   const double speed = c.excitation.kind == ExcitationKind::plane_s ? std::sqrt(c.c55 / c.density)
                                                                      : std::sqrt((c.c13 + 2 * c.c55) / c.density);
-  const double arrival = (c.height - a.x3) / speed;
+  return (c.height - a.x3) / speed;
+}
+
+// Steps until the plane burst (P or S) from the top row has passed `probe`, with one period to spare.
+inline std::int64_t steps_until_burst_passes(const Config& c, const std::string& probe) {
+  const double arrival = burst_arrival(c, probe_named(c, probe));
   return std::llround((arrival + (c.excitation.cycles + 1.0) * c.excitation.period) / c.dt);
+}
+
+// Steps the record needs for the harmonic ratios at `probe`: the burst's steady window starts one period
+// after it arrives (less a quarter, plus the sine's rise to half its peak, T/12) and lasts three periods
+// (analysis::burst_steady_start, burst_harmonic_amplitudes); a quarter period to spare for dispersion.
+inline std::int64_t steps_for_harmonic_window(const Config& c, const std::string& probe) {
+  const double end = burst_arrival(c, probe_named(c, probe)) + 4.0 * c.excitation.period;
+  return static_cast<std::int64_t>(std::ceil(end / c.dt));
 }
 
 }  // namespace polymech::mps_elastic

@@ -210,8 +210,15 @@ class NosbPd {
     return broken;
   }
 
-  // The watchdog's check: the first particle whose displacement or velocity is NaN or infinite.
-  models::Health health() const { return models::particle_health(f_); }
+  // The watchdog's check: the first particle whose displacement or velocity is NaN or infinite, or that
+  // moves a spacing in one step (issue 33 item 2): at dt_safety x the stable step that is about c / dt_safety
+  // (P-wave speed c), a material speed no solid reaches without shock physics, which the model does not
+  // have; a lattice that blew up gets there long before its values overflow.
+  models::Health health() const {
+    const models::Health h = models::particle_health(f_);
+    if (!h.finite || !(cfg_.dt > 0)) return h;
+    return models::speed_health(f_, cfg_.spacing / cfg_.dt, "one spacing per step (dx / dt)");
+  }
   bool finite() const { return health().finite; }
 
   HostFields host_fields() const {

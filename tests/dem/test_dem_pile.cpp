@@ -52,3 +52,24 @@ TEST(DemPile, PourIntoABoxSettlesInsideTheBox) {
   EXPECT_LT(max_wall_overlap, 0.05 * r);
   EXPECT_LT(max_pair_overlap, 0.05 * r);
 }
+
+// The watchdog's speed bound (issue 33 item 2): a sphere that moves more than the neighbour lists' skin in
+// one step could pass through another unseen; one just below it is healthy.
+TEST(DemPile, WatchdogFlagsASphereFasterThanTheSkinPerStep) {
+  auto c = pour_into_a_box();
+  c.skin = 0.001;
+  dm::Dem<double> m(c);
+  const double limit = c.skin / m.dt();
+  const auto set_speed = [&](double s) {
+    auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), m.spheres().v);
+    for (int k = 0; k < 3; ++k) v(5, k) = k == 0 ? s : 0.0;
+    Kokkos::deep_copy(m.spheres().v, v);
+  };
+  set_speed(0.99 * limit);
+  EXPECT_TRUE(m.health().finite);
+  set_speed(1.01 * limit);
+  const pm::models::Health h = m.health();
+  EXPECT_FALSE(h.finite);
+  EXPECT_EQ(h.first_bad, 5);
+  EXPECT_NE(h.problem.find("neighbour skin per step"), std::string::npos) << h.problem;
+}

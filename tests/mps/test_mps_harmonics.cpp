@@ -9,6 +9,9 @@
 // 10 MHz S waves are 0.53 and 0.32 mm long.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -21,6 +24,16 @@ namespace pm = polymech;
 
 namespace {
 
+// The record length the app demands before a run (steps_for_harmonic_window) holds the window the analysis
+// then took: checked on every run of this file (issue 33 item 3).
+void expect_window_inside_estimate(const me::Config& c, const std::string& probe, const me::HarmonicsResult& r) {
+  const double window_end = r.window_start + 3.0 * c.excitation.period;
+  const double estimate = static_cast<double>(me::steps_for_harmonic_window(c, probe)) * c.dt;
+  EXPECT_TRUE(r.analysis_error.empty()) << r.analysis_error;
+  EXPECT_LE(window_end, estimate) << "the analysis window ends after the record length the app asks for";
+  EXPECT_GE(window_end, estimate - 1.5 * c.excitation.period) << "the estimate asks for far more than the window needs";
+}
+
 me::HarmonicsResult run_case(const char* scene_file, const char* accuracy, double below) {
   const char* src = std::getenv("POLYMECH_SOURCE_DIR");
   io::MpsSceneOptions o;
@@ -30,7 +43,9 @@ me::HarmonicsResult run_case(const char* scene_file, const char* accuracy, doubl
   me::crop_around_crack(c, 0.040, 0.010, below);
   c.steps = me::steps_until_burst_passes(c, s.harmonics_probe);
   const int field = s.harmonics_component == "u1" ? pm::mps::probe_u1 : pm::mps::probe_u3;
-  return me::run_harmonics_case<double>(c, s.harmonics_probe, field, s.normal_reaction_ratio);
+  auto r = me::run_harmonics_case<double>(c, s.harmonics_probe, field, s.normal_reaction_ratio);
+  expect_window_inside_estimate(c, s.harmonics_probe, r);
+  return r;
 }
 
 std::string table(const me::HarmonicsResult& r) {
@@ -61,4 +76,24 @@ TEST(MpsHarmonics, SlippingCrackGeneratesOddHarmonicsOnly) {
   double max_slip = 0;
   for (double f : r.crack.contact.slip) max_slip = std::max(max_slip, f);
   EXPECT_GT(max_slip, 0.5);
+}
+
+// The burst analysis over exactly three periods: a pure sine has no harmonics; a window that runs past the
+// end of the record is refused with the times, not read as silence (issue 33 item 3).
+TEST(MpsHarmonics, BurstWindowMustLieInsideTheRecord) {
+  const double f0 = 2e6, dt = 1e-9;
+  std::vector<double> t, x;
+  for (int k = 0; k < 4000; ++k) {  // 4 us: 8 periods
+    t.push_back(k * dt);
+    x.push_back(std::sin(2.0 * M_PI * f0 * k * dt));
+  }
+  const auto a = pm::analysis::burst_harmonic_amplitudes(t, x, 1e-6, f0);
+  EXPECT_NEAR(a[0], 1.0, 1e-3);
+  for (int n = 1; n < 5; ++n) EXPECT_LT(a[static_cast<std::size_t>(n)], 1e-3);
+  try {
+    pm::analysis::burst_harmonic_amplitudes(t, x, 3e-6, f0);  // ends at 4.5 us
+    ADD_FAILURE() << "a window past the record was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("runs past the end of the record"), std::string::npos) << e.what();
+  }
 }
