@@ -84,6 +84,8 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   const auto wheel = root.optional_table("wheel");
   if (fx.has("fe_surfaces") && !wheel)
     s.model.fail("effects", "lists \"fe_surfaces\", but the scene has no [wheel] (the bin is planes; the wheel is the FE surface)");
+  if (fx.has("rigid_wheel") && !wheel)
+    s.model.fail("effects", "lists \"rigid_wheel\", but the scene has no [wheel] table (radius, width, mass, slip, ...)");
   if (wheel && !fx.has("rigid_wheel"))
     wheel->fail_table("needs the effects \"fe_surfaces\" and \"rigid_wheel\" in model.effects");
 

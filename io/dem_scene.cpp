@@ -40,6 +40,9 @@ DemScene load_dem_scene(const std::filesystem::path& file, const SceneOptions& o
   out.header.set_accuracy(read_accuracy(root, "", 0.0, "paper"));
   const auto& fx = out.config.effects;
   if (fx.has("clumps")) s.model.fail("effects", "lists \"clumps\", but an impact scene has spheres only (no clumps)");
+  if (fx.has("rigid_wheel"))  // the wheel drives over a bed: dem_pour scenes (issue 33 item 11)
+    s.model.fail("effects", "lists \"rigid_wheel\", but an impact scene has no wheel (a [wheel] table belongs to a bed scene "
+                            "run by dem_pour)");
 
   const SceneTable particle = root.table("particle");
   out.impact.particle = read_material(particle, false);

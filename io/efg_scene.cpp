@@ -94,6 +94,15 @@ EfgScene load_efg_scene(const std::filesystem::path& file, const SceneOptions& o
   const double nodes = nx * ny + nx;
   const double gauss_points = (nx - 1) * (ny - 1) * c.gauss * c.gauss;
   out.cost = efg_cost(nodes, gauss_points, c.support_factor);
+  if (nx < 1e6 && ny < 1e6) {  // the searches' pairs (larger ones are refused by the node count already)
+    std::vector<double> xs, ys;
+    efg::node_lines(c, xs, ys);
+    const efg::SearchSize ss = efg::search_size(c, xs, ys);
+    const double pattern_estimated = nodes * 4.0 * 3.14159 * c.support_factor * c.support_factor;
+    // candidates: an index each, twice (the search's count and fill passes); pattern: K's 2 x 2 blocks
+    out.cost.bytes += ss.candidates * 2.0 * 4.0 + std::max(0.0, ss.pattern - pattern_estimated) * 4.0 * (8.0 + 16.0 + 40.0);
+    out.cost.pairs = std::max(out.cost.pairs, ss.candidates);
+  }
   out.cost.size_keys = {"plate.width = " + format_number(c.width) + " m", "plate.height = " + format_number(c.height) + " m",
                         "discretization.h_min = " + format_number(c.h_min) + " m",
                         "discretization.h_max = " + format_number(c.h_max) + " m",

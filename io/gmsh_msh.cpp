@@ -192,12 +192,14 @@ mesh::Mesh read_gmsh_mesh(const std::filesystem::path& file) {
           s >> nphys;
           if (s.fail() || nphys < 0) r.fail("malformed entity line (dimension " + std::to_string(dim) + ")");
           std::vector<int> phys;
+          // read as many as the line holds: a count of 2e9 on a short line must not allocate for 2e9 (issue 33 item 11)
           for (long long k = 0; k < nphys; ++k) {
             long long p = 0;
-            s >> p;
+            if (!(s >> p))
+              r.fail("malformed entity line: it announces " + std::to_string(nphys) + " physical tags and holds " +
+                     std::to_string(k));
             phys.push_back(static_cast<int>(std::llabs(p)));
           }
-          if (s.fail()) r.fail("malformed entity line: fewer physical tags than announced");
           if (dim == 2) surface_physicals[static_cast<int>(tag)] = phys;
         }
       r.expect_end("$Entities");

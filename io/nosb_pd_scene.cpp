@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "nosb_pd/particles.hpp"
 
 namespace polymech::io {
 
@@ -77,17 +78,7 @@ void read_material(const SceneTable& m, np::Config& c) {
                           format_number(cp) + " m/s; allowed: a wave speed " + pl::wave_speed().text());
 }
 
-// Particles of the body at this spacing (from its volume; the layouts fill it at one particle per
-// spacing^dim) and the keys that set that number.
-double particle_estimate(const np::Config& c) {
-  const auto& g = c.geometry;
-  const double pi = 3.14159265358979323846;
-  const auto n = [&](double x) { return std::max(1.0, x / c.spacing); };  // layers along a size x
-  if (g.shape == np::Shape::box) return n(g.length) * n(g.height) * (c.dimension == 3 ? n(g.width) : 1.0);
-  if (g.shape == np::Shape::disc) return pi * n(g.radius) * n(g.radius) * n(g.thickness);
-  return pi * n(g.radius) * n(g.radius) * n(g.length);
-}
-
+// The keys that set the number of particles (nosb_pd::lattice_size counts them).
 std::vector<std::string> size_keys(const np::Config& c, double spacing, const std::string& accuracy) {
   const auto& g = c.geometry;
   std::vector<std::string> keys = {"discretization.spacing = " + format_number(spacing) + " m (x " +
@@ -152,9 +143,9 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
       disc.fail("layout", "= \"cylindrical\" conforms to a circle: it needs a 3D disc or round_bar geometry");
   }
   // The size of the run, refused before anything is built over the body if it cannot fit.
-  const double bonds_per_particle = lattice_neighbours(c.dimension, c.horizon_ratio);
+  const np::LatticeSize size = np::lattice_size(c);
   const auto cost = [&](double steps) {
-    CostEstimate e = pd_cost(particle_estimate(c), bonds_per_particle, out.header.precision == "float", steps);
+    CostEstimate e = pd_cost(size.particles, size.bonds / std::max(1.0, size.particles), out.header.precision == "float", steps);
     e.size_keys = size_keys(c, spacing, accuracy);
     return e;
   };

@@ -93,6 +93,36 @@ void estimate_lines(const Config& c, double& nx, double& ny) {
                              c.crack == CrackKind::none ? c.h_max : c.h_min, c.h_max, c.growth) + 1;
 }
 
+// On a tensor grid of lines the points of a square of half-width r around a point count separably, (lines
+// within r in x) x (lines within r in y); a disc of radius r holds about pi / 4 of the square.
+SearchSize search_size(const Config& c, const std::vector<double>& xs, const std::vector<double>& ys) {
+  double widest = 0.0;
+  for (const auto* v : {&xs, &ys})
+    for (std::size_t i = 0; i + 1 < v->size(); ++i) widest = std::max(widest, (*v)[i + 1] - (*v)[i]);
+  const double R = c.support_factor * widest;
+  // sum over the positions p of the lines within r of p
+  const auto within = [](const std::vector<double>& lines, const std::vector<double>& at, double r) {
+    double sum = 0.0;
+    for (double p : at) {
+      const auto lo = std::lower_bound(lines.begin(), lines.end(), p - r);
+      const auto hi = std::upper_bound(lines.begin(), lines.end(), p + r);
+      sum += static_cast<double>(hi - lo);
+    }
+    return sum;
+  };
+  const auto centres = [](const std::vector<double>& v) {
+    std::vector<double> m;
+    for (std::size_t i = 0; i + 1 < v.size(); ++i) m.push_back(0.5 * (v[i] + v[i + 1]));
+    return m;
+  };
+  constexpr double disc = 0.785398163397448;  // pi / 4
+  const double g2 = static_cast<double>(c.gauss) * static_cast<double>(c.gauss);
+  SearchSize s;
+  s.candidates = disc * g2 * within(xs, centres(xs), R) * within(ys, centres(ys), R);
+  s.pattern = disc * within(xs, xs, 2.0 * R) * within(ys, ys, 2.0 * R);
+  return s;
+}
+
 void node_lines(const Config& c, std::vector<double>& xs, std::vector<double>& ys) {
   const double a = c.crack_length;
   const double f = a + c.tip_offset * c.h_min;

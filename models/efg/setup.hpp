@@ -42,6 +42,15 @@ Layout make_layout(const Config& c);
 // The node count of make_layout(c), from the node lines only (the loader's cost estimate).
 std::size_t count_nodes(const Config& c);
 
+// The pairs the model's fixed-radius searches will find, from the node lines (the loader's memory
+// estimate, issue 33 item 11: a fine h_min beside a coarse h_max made the searches, which use the largest
+// support radius everywhere, allocate 9 GB that the node count did not announce): `candidates`, the
+// Gauss points' nodes within the largest support radius R; `pattern`, the node pairs within 2 R.
+struct SearchSize {
+  double candidates = 0.0, pattern = 0.0;
+};
+SearchSize search_size(const Config& c, const std::vector<double>& xs, const std::vector<double>& ys);
+
 // Estimated node-line counts of a configuration (x, y) without building them.
 void estimate_lines(const Config& c, double& nx, double& ny);
 

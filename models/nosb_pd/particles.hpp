@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -160,6 +161,102 @@ inline Particles generate_particles(const Config& c) {
   }
   morton_order(p, h);
   return p;
+}
+
+// The size of generate_particles(c) without building it, for the scene's cost estimate (issue 33 item 8:
+// the interior-only estimate was 20 % low in particles and 40 % high in bonds on thin plates): the exact
+// particle count, and the directed bonds within the horizon (jitter aside): on a box lattice from the
+// offsets o of the family, prod_k (n_k - |o_k|) pairs each; on a disc or bar from its section's points
+// (made as generate_particles makes them), the pairs within the horizon left at each offset along the
+// axis, times the layers that have that offset. A section of more than 2e4 points uses the lens area of
+// two circles instead (within a few per cent there).
+struct LatticeSize {
+  double particles = 0.0, bonds = 0.0;
+};
+namespace detail {
+// Ordered pairs (p, q) of planar points with |p - q|^2 <= r2 (p != q), on a cell grid of size sqrt(r2).
+inline double planar_pairs(const std::vector<PlanarPoint>& pts, double r2) {
+  if (pts.empty() || !(r2 > 0)) return 0.0;
+  const double cell = std::sqrt(r2);
+  double lo_a = 1e300, lo_b = 1e300;
+  for (const auto& p : pts) lo_a = std::min(lo_a, p.a), lo_b = std::min(lo_b, p.b);
+  std::vector<std::pair<std::int64_t, std::size_t>> key(pts.size());
+  std::int64_t width = 1;
+  for (const auto& p : pts) width = std::max(width, static_cast<std::int64_t>((p.a - lo_a) / cell) + 2);
+  const auto cell_of = [&](const PlanarPoint& p) {
+    return static_cast<std::int64_t>((p.b - lo_b) / cell) * width + static_cast<std::int64_t>((p.a - lo_a) / cell);
+  };
+  for (std::size_t i = 0; i < pts.size(); ++i) key[i] = {cell_of(pts[i]), i};
+  std::sort(key.begin(), key.end());
+  double pairs = 0.0;
+  for (const auto& p : pts) {
+    const std::int64_t c0 = cell_of(p);
+    for (std::int64_t db = -1; db <= 1; ++db)
+      for (std::int64_t da = -1; da <= 1; ++da) {
+        const std::int64_t c = c0 + db * width + da;
+        auto it = std::lower_bound(key.begin(), key.end(), std::make_pair(c, std::size_t(0)));
+        for (; it != key.end() && it->first == c; ++it) {
+          const PlanarPoint& q = pts[it->second];
+          const double d2 = (p.a - q.a) * (p.a - q.a) + (p.b - q.b) * (p.b - q.b);
+          if (d2 <= r2 && &q != &p) pairs += 1.0;
+        }
+      }
+  }
+  return pairs;
+}
+}  // namespace detail
+
+inline LatticeSize lattice_size(const Config& c) {
+  const Geometry& g = c.geometry;
+  const double h = c.spacing;
+  const int D = c.dimension;
+  const double delta2 = c.horizon() * c.horizon() * (1.0 + 2e-6);  // the family's radius, as the model builds it
+  const auto n = [&](double extent) { return static_cast<double>(detail::cells(extent, h)); };
+  LatticeSize out;
+  const bool round = g.shape == Shape::round_bar || (g.shape == Shape::disc && D == 3);
+  if (!round) {  // a box, or the 2D disc (a rectangle of nx x nz cells)
+    const bool disc2 = g.shape == Shape::disc;
+    const double nx = disc2 ? n(2.0 * g.radius) : n(g.length), ny = disc2 ? n(g.thickness) : n(D == 3 ? g.width : g.height);
+    const double nz = D == 3 && !disc2 ? n(g.height) : 1.0;
+    out.particles = nx * ny * nz;
+    const auto m = static_cast<int>(std::floor(c.horizon_ratio));
+    const double r2 = c.horizon_ratio * c.horizon_ratio * (1.0 + 1e-9);
+    for (int a = -m; a <= m; ++a)
+      for (int b = -m; b <= m; ++b)
+        for (int e = (nz > 1 ? -m : 0); e <= (nz > 1 ? m : 0); ++e) {
+          const int d2 = a * a + b * b + e * e;
+          if (d2 == 0 || d2 > r2) continue;
+          out.bonds += std::max(0.0, nx - std::abs(a)) * std::max(0.0, ny - std::abs(b)) * std::max(0.0, nz - std::abs(e));
+        }
+    return out;
+  }
+  // a disc (axis z, layers of thickness / nz) or a round bar (axis x, slices of length / nx) in 3D
+  const double extent = g.shape == Shape::round_bar ? g.length : g.thickness;
+  const std::int64_t layers = detail::cells(extent, h);
+  const double step = extent / static_cast<double>(layers);
+  const double R = g.radius, area = detail::kPi * R * R;
+  const bool small = detail::kPi * (R / h) * (R / h) <= 2e4;  // the exact count costs (2m + 1) P 9 m^2 distances
+  const std::vector<detail::PlanarPoint> section = small ? detail::disc_points(R, h, g.layout) : std::vector<detail::PlanarPoint>{};
+  const double points = small ? static_cast<double>(section.size()) : area / (h * h);
+  out.particles = points * static_cast<double>(layers);
+  for (std::int64_t a = 0; a < layers; ++a) {  // offsets a and -a alike
+    const double left = delta2 - (static_cast<double>(a) * step) * (static_cast<double>(a) * step);
+    if (left < 0) continue;
+    double pairs = 0.0;
+    if (small) {
+      pairs = detail::planar_pairs(section, left) + (a != 0 ? points : 0.0);  // a != 0: p with itself one layer on
+    } else {  // the lens of the section with itself shifted by each in-plane lattice offset within sqrt(left)
+      const auto m = static_cast<std::int64_t>(std::floor(std::sqrt(left) / h));
+      for (std::int64_t b = -m; b <= m; ++b)
+        for (std::int64_t e = -m; e <= m; ++e) {
+          const double d = h * std::sqrt(static_cast<double>(b * b + e * e));
+          if ((b == 0 && e == 0 && a == 0) || d * d > left || d >= 2.0 * R) continue;
+          pairs += points * (2.0 * R * R * std::acos(d / (2.0 * R)) - 0.5 * d * std::sqrt(4.0 * R * R - d * d)) / area;
+        }
+    }
+    out.bonds += (a == 0 ? 1.0 : 2.0) * static_cast<double>(layers - a) * pairs;
+  }
+  return out;
 }
 
 }  // namespace polymech::nosb_pd

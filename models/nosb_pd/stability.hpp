@@ -31,10 +31,26 @@ double NosbPd<T, D>::stable_time_step(const Config& c) {
   if (c.effects.has("weighted_function")) pe.push_back("weighted_function");
   if (c.effects.has("hourglass")) pe.push_back("hourglass");
   patch.effects = EffectSet::resolve(pe, effect_table());
-  patch.geometry.shape = Shape::box;
-  if (patch.geometry.layout == Layout::cylindrical) patch.geometry.layout = Layout::jittered;
   const double side = (2.0 * std::ceil(c.horizon_ratio) + 2.0) * c.spacing;  // the fastest modes are local
-  patch.geometry.length = patch.geometry.width = patch.geometry.height = side;
+  const Geometry& g = c.geometry;
+  const bool thin = g.shape == Shape::box ? std::min({g.length, g.height, D == 3 ? g.width : g.length}) < side
+                    : g.shape == Shape::disc ? std::min(2.0 * g.radius, g.thickness) < side
+                                             : 2.0 * g.radius < side;
+  if (thin) {
+    // A body thinner than the patch: every family is cut by its surfaces, and cut families (a smaller shape
+    // tensor K) are stiffer than whole ones; a box patch of whole families gave a step that diverged in 50
+    // steps (issue 33 item 11: a round bar 2.5 spacings in radius, horizon 7 spacings). The patch is then
+    // the body itself, cut to the patch's length where it is longer.
+    patch.geometry.length = std::min(g.length, side);
+    patch.geometry.width = std::min(g.width, side);
+    patch.geometry.height = std::min(g.height, side);
+    patch.geometry.radius = g.shape == Shape::round_bar ? g.radius : std::min(g.radius, 0.5 * side);
+    patch.geometry.thickness = g.thickness;
+  } else {
+    patch.geometry.shape = Shape::box;
+    if (patch.geometry.layout == Layout::cylindrical) patch.geometry.layout = Layout::jittered;
+    patch.geometry.length = patch.geometry.width = patch.geometry.height = side;
+  }
   patch.loading = Loading::none;
   patch.material.law = Law::elastic;
   patch.dt = 1.0;  // not used

@@ -97,6 +97,11 @@ TEST(DemScenes, ValuesThatNeedAnEffectAreRefused) {
                {"unknown effect", "friction, damping, fe_surfaces, clumps"});
   expect_error(replace_once(kBase, "effects = []", "effects = [\"clumps\"]"), "effects = [\"clumps\"]",
                {"clumps", "impact"});
+  // issue 33 item 11: was "dem: the wheel needs radius > 0, ..." from the model, without file, line or key
+  // (the fuzzed variant: the mesh scene chung_ooi_test2_mesh with the wheel's effect added)
+  const std::string wheel = replace_once(replace_once(kBase, "effects = []", "effects = [\"fe_surfaces\", \"rigid_wheel\"]"),
+                                         "target = \"plane\"", "target = \"mesh\"");
+  expect_error(wheel, "effects = [\"fe_surfaces\", \"rigid_wheel\"]", {"model.effects", "rigid_wheel", "no wheel", "dem_pour"});
 }
 
 TEST(DemScenes, ImplausibleValuesAreRefused) {

@@ -147,6 +147,9 @@ TEST(GmshMsh, MalformedNumbersAndTruncation) {
   const std::string end = polymech::testing::replace_once(kMesh, "$EndNodes", "$EndNode");
   expect_error(end, polymech::testing::line_of(end, "$EndNode"), {"expected $EndNodes"});
   expect_error("hello\n", 1, {"expected a section header"});
+  // an entity announcing 2e9 physical tags on a short line: an error at that line, not std::bad_alloc (issue 33 item 11)
+  const std::string tags = polymech::testing::replace_once(kMesh, "1 0 0 0 0 1 1 1 1 0", "1 0 0 0 0 1 1 2000000000 1 0");
+  expect_error(tags, polymech::testing::line_of(tags, "1 1 2000000000 1 0"), {"announces 2000000000 physical tags", "holds 2"});
 }
 
 // The neutral reader keeps triangles of named surfaces (a DEM surface may be triangulated); the

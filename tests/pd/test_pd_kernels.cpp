@@ -319,3 +319,76 @@ TEST(PdKernels, SinglePrecisionShapeTensorAtFineSpacing) {
   EXPECT_EQ(failed, 0);
   EXPECT_LT(err, 2e-5) << "F of a homogeneous stretch in float";
 }
+
+// The scene's size estimate (issue 33 item 8) against the model that is built: the particle count and the
+// bonds exactly on every layout without jitter (boxes, lattice and ring sections of discs and bars); a
+// section of more than 2e4 points (the lens-area count) within 3 %.
+TEST(PdKernels, LatticeSizeEstimateMatchesTheBuiltModel) {
+  struct Case {
+    const char* name;
+    np::Config c;
+    double bond_tolerance;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"3D box lattice", box_config(3, 7, 3.0, {}), 0.0});
+  cases.push_back({"2D box, m = 4.5", box_config(2, 11, 4.5, {}), 0.0});
+  np::Config bar = box_config(3, 7, 3.0, {}, np::Layout::lattice);
+  bar.geometry.length = 0.012;
+  bar.geometry.height = 0.005;
+  cases.push_back({"3D thin box", bar, 0.0});
+  np::Config disc = box_config(3, 7, 3.0, {});
+  disc.geometry.shape = np::Shape::disc;
+  disc.geometry.radius = 0.012;
+  disc.geometry.thickness = 0.004;
+  cases.push_back({"3D disc lattice", disc, 0.0});
+  np::Config rings = disc;
+  rings.geometry.layout = np::Layout::cylindrical;
+  cases.push_back({"3D disc rings", rings, 0.0});
+  np::Config round = disc;
+  round.geometry.shape = np::Shape::round_bar;
+  round.geometry.radius = 0.0025;  // the draft tension bar: 2.5 spacings (the issue: 393 particles estimated, 480 built)
+  round.geometry.length = 0.010;
+  cases.push_back({"round bar lattice", round, 0.0});
+  round.geometry.layout = np::Layout::cylindrical;
+  round.horizon_ratio = 7.0;
+  cases.push_back({"round bar rings, m = 7", round, 0.0});
+  np::Config wide = disc;  // 21 000 points in the section: the lens-area count
+  wide.geometry.radius = 0.082;
+  wide.geometry.thickness = 0.001;
+  cases.push_back({"one-layer disc of radius 82 spacings", wide, 0.03});
+  for (const auto& k : cases) {
+    const np::LatticeSize est = np::lattice_size(k.c);
+    double particles = 0, bonds = 0;
+    if (k.c.dimension == 3) {
+      np::NosbPd<double, 3> m(k.c);
+      particles = m.particles();
+      bonds = static_cast<double>(m.bonds());
+    } else {
+      np::NosbPd<double, 2> m(k.c);
+      particles = m.particles();
+      bonds = static_cast<double>(m.bonds());
+    }
+    EXPECT_EQ(est.particles, particles) << k.name;
+    EXPECT_LE(std::abs(est.bonds - bonds), k.bond_tolerance * bonds + 0.5) << k.name << ": estimated " << est.bonds
+                                                                             << " bonds, built " << bonds;
+  }
+}
+
+// The watchdog's speed bound (issue 33 item 2): a particle one spacing per step or slower is healthy, one
+// just above it is named with its speed and the bound.
+TEST(PdKernels, WatchdogFlagsAParticleMovingASpacingPerStep) {
+  np::NosbPd<double, 3> m(box_config(3, 6, 3.0, {}));
+  const double limit = m.config().spacing / m.dt();
+  const auto set_speed = [&](double s) {
+    pm::testing::set_velocity<np::NosbPd<double, 3>, 3>(m, [s](const Arr<3>&, int i) {
+      return i == 17 ? Arr<3>{0.0, s, 0.0} : Arr<3>{0.0, 0.0, 0.0};
+    });
+  };
+  set_speed(0.99 * limit);
+  EXPECT_TRUE(m.health().finite);
+  set_speed(1.01 * limit);
+  const pm::models::Health h = m.health();
+  EXPECT_FALSE(h.finite);
+  EXPECT_EQ(h.first_bad, 17);
+  EXPECT_NE(h.problem.find("more than one spacing per step"), std::string::npos) << h.problem;
+}
