@@ -158,6 +158,7 @@ CostEstimate mps_cost(double particles, double influence_radius, bool rotation, 
   c.seconds = particles * c.steps / rate;
   c.rate = std::string(single ? "9.10" : "7.46") +
            " M particle-steps/s, docs/PERFORMANCE.md 'MPS elastic force kernels' (MpsStep, 2 cores)";
+  c.rate_threads = 2;
   return c;
 }
 
@@ -178,6 +179,7 @@ CostEstimate pd_cost(double particles, double bonds_per_particle, bool single, d
   c.bytes = process_bytes + 1.2 * (particles * 80.0 * real + c.pairs * (5.0 + 4.0 * real));
   c.seconds = c.pairs * steps / 103e6;
   c.rate = "103 M bond-steps/s, docs/PERFORMANCE.md 'Peridynamic bond forces' (full-size penetration run, 2 threads)";
+  c.rate_threads = 2;
   return c;
 }
 

@@ -24,6 +24,7 @@ struct CostEstimate {
   double bytes = 0.0;        // memory while running
   double seconds = 0.0;      // predicted wall time
   std::string rate;          // the measured rate the prediction uses, and where it is documented
+  int rate_threads = 1;      // the threads the rate was measured with (apps scale `seconds` to theirs)
   std::vector<std::string> size_keys;  // "domain.width = 0.05 m", ...: what sets the size
 };
 

@@ -6,7 +6,7 @@
 
 A static run (scenes/efg/edge_crack_static.toml, centre_crack_static.toml) writes into its folder
   j_paths.png     K / (sigma sqrt(pi a)) from the J-integral on each path against the handbook value
-  stress.png      sigma_yy at the nodes on the deformed plate (efg.h5; displacement magnified)
+  stress.png      sigma_yy at the nodes on the deformed plate (fields.h5; displacement magnified)
 A dynamic run (chen_centre_crack_*.toml) writes
   sif_history.png K / (sigma sqrt(pi a0)) against time (mean of the paths and each path) and the crack
                   opening at the centre (sif_history.csv)
@@ -54,7 +54,9 @@ def plot_static(run, s):
     plt.close(fig)
     written = ["j_paths.png"]
 
-    h5 = os.path.join(run, "efg.h5")
+    h5 = os.path.join(run, "fields.h5")
+    if not os.path.exists(h5):  # runs before the field files had one name
+        h5 = os.path.join(run, "efg.h5")
     if os.path.exists(h5):
         with open_h5(h5) as f:
             steps = snapshot_steps(f)

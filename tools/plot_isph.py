@@ -9,7 +9,7 @@ writes into the run folder:
                          error of the pressure against rho g (H - y), or the surge front Z = x / a), the
                          largest particle speed, the PPE iterations per step; with a body, its centre
                          height and the fluid's vertical force on it
-  particles.png          the particles of the first, a middle and the last snapshot (particles.h5),
+  particles.png          the particles of the first, a middle and the last snapshot (fields.h5),
                          coloured by pressure, free-surface particles circled
   pressure_profile.png   hydrostatic tank: the pressure of every particle of the last snapshot against
                          its depth, with rho g (H - y) (rho, g, H from the run's scene file)
@@ -80,7 +80,9 @@ def plot_particles(run, s, tank):
     """particles.png from the snapshots; returns the last one drawn, or None when there is none. Snapshots
     whose positions are all zero (the isph app writes its step-0 snapshot before the particles are
     placed) are left out; particles outside the tank (a run that blew up) are counted, not drawn."""
-    path = os.path.join(run, "particles.h5")
+    path = os.path.join(run, "fields.h5")
+    if not os.path.exists(path):  # runs before the field files had one name
+        path = os.path.join(run, "particles.h5")
     if not os.path.exists(path):
         return None
     plt = pyplot()

@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <string>
@@ -12,6 +14,7 @@
 
 #include "apps/common/cli.hpp"
 #include "core/kokkos_shim.hpp"
+#include "core/types.hpp"
 #include "io/cost.hpp"
 #include "io/output.hpp"
 #include "io/scene.hpp"
@@ -55,12 +58,42 @@ inline void add_common_options(CLI::App& app, CommonOptions& o, const std::strin
          {"flush", "keep"});
 }
 
+// A common option that means nothing to this app (its run length is not a step count, its scenes have no
+// accuracy presets): hidden from --help, and refused with the reason, exit 2, after the value's own checks
+// ("--steps 5: does not apply: ..."), never accepted and ignored (issue 33 item 8).
+inline void refuse_option(CLI::App& app, const std::string& name, const std::string& why) {
+  CLI::Option* o = app.get_option(name);
+  o->group("");
+  o->check(CLI::Validator([name, why](std::string& v) { return name + " " + cli::shown(v) + ": does not apply: " + why; }, ""));
+}
+
+// The estimate of a scene whose loader counted `scene_steps` steps, for a run of --steps instead (when
+// given): time and steps scale with the step count (the set-up of these methods is small beside it).
+inline io::CostEstimate with_steps(io::CostEstimate c, std::int64_t scene_steps, std::int64_t steps) {
+  if (steps > 0 && scene_steps > 0 && steps != scene_steps) {
+    const double f = static_cast<double>(steps) / static_cast<double>(scene_steps);
+    c.seconds *= f;
+    c.steps *= f;
+  }
+  return c;
+}
+
 // Prints the cost estimate of the loaded scene before a run (stderr, unless --quiet), or for --dry-run
 // on stdout; true when the app should stop here (--dry-run: nothing has been allocated for the run).
 inline bool announce_cost(const char* name, const io::SceneHeader& scene, const io::CostEstimate& cost,
                           const CommonOptions& o) {
+  // The rate was measured with cost.rate_threads threads; this run has its own (perfect scaling assumed,
+  // at most the machine's cores: more threads than cores do not run faster; issue 33 item 8).
+  io::CostEstimate mine = cost;
+  const long long threads =
+      o.threads > 0 ? o.threads : cli::integer_from(std::getenv("OMP_NUM_THREADS")).value_or(machine_cores());
+  const int used = static_cast<int>(std::max(1LL, std::min<long long>(threads, machine_cores())));
+  if (used != cost.rate_threads) {
+    mine.seconds = cost.seconds * cost.rate_threads / used;
+    mine.rate += "; scaled to " + std::to_string(used) + (used == 1 ? " thread" : " threads");
+  }
   const std::string text = "[" + std::string(name) + "] " + scene.file.string() + " at accuracy '" + scene.accuracy +
-                           "', " + scene.precision + " precision\n" + io::describe(cost);
+                           "', " + scene.precision + " precision\n" + io::describe(mine);
   if (o.dry_run) {
     std::printf("%sdry run: scene checked, nothing run\n", text.c_str());
     return true;
@@ -82,7 +115,15 @@ inline nlohmann::json summary_header(const std::string& name, const io::SceneHea
   j["subnormals"] = kx::to_string(kx::thread_subnormals());  // as this thread runs (every host thread alike)
   j["version"] = version();  // the build: project() version and git commit (cli.hpp)
   j["commit"] = commit();
+  j["command"] = invocation();
+  j["threads"] = kx::concurrency<ExecSpace>();  // per MPI rank where there are ranks
   return j;
+}
+
+// "1 thread", "2 threads": the thread count of this run, for the apps' first lines (issue 33 item 10).
+inline std::string thread_count() {
+  const int n = kx::concurrency<ExecSpace>();
+  return std::to_string(n) + (n == 1 ? " thread" : " threads");
 }
 
 // The thread count Kokkos starts with: --threads, else OMP_NUM_THREADS (checked by parse_command_line),
@@ -94,11 +135,23 @@ inline int session_threads(int threads) {
   return -1;
 }
 
+// Kokkos 3.4 warns on every start when OMP_PROC_BIND is unset (issue 33 item 10). The OpenMP runtime read
+// its environment when it was loaded, before main, so setting it here changes nothing but the warning:
+// the threads stay unbound, as they were (right on a shared machine; on one's own, OMP_PROC_BIND=spread
+// OMP_PLACES=threads binds them).
+inline void quiet_proc_bind_warning() {
+  if (!std::getenv("OMP_PROC_BIND")) setenv("OMP_PROC_BIND", "false", 0);
+}
+
 // Kokkos for the lifetime of an app, with its threads and subnormal mode (--threads, --subnormals).
 class KokkosSession {
  public:
-  explicit KokkosSession(int threads) { kx::initialize(session_threads(threads)); }
+  explicit KokkosSession(int threads) {
+    quiet_proc_bind_warning();
+    kx::initialize(session_threads(threads));
+  }
   explicit KokkosSession(const CommonOptions& o) {
+    quiet_proc_bind_warning();
     kx::initialize(session_threads(o.threads), o.subnormals.empty() ? kx::subnormals_from_environment()
                                                    : kx::parse_subnormals(o.subnormals, "--subnormals"));
   }

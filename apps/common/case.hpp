@@ -252,11 +252,4 @@ int with_precision_and_dimension(const std::string& precision, int dim, Body&& b
   return dim == 3 ? body(double{}, Three{}) : body(double{}, Two{});
 }
 
-// The command line as typed (summary "command").
-inline std::string command_line(int argc, char** argv) {
-  std::string command;
-  for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
-  return command;
-}
-
 }  // namespace polymech::apps

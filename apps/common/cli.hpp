@@ -256,7 +256,19 @@ inline std::optional<long long> integer_from(const char* s) {
 // system: --threads against the cores (more: a warning unless --quiet) and OMP_NUM_THREADS, that --scene
 // is a file and that the output folder (--out, or --restart's) can be written. Run by the polymech app, it
 // then prints that app's notice (POLYMECH_DISPATCH_NOTICE) on stderr.
+// The command line as typed, recorded by parse_command_line (summary "command" of every app).
+inline std::string& invocation() {
+  static std::string command;
+  return command;
+}
+inline std::string command_line(int argc, const char* const* argv) {
+  std::string command;
+  for (int k = 0; k < argc; ++k) command += (k ? " " : "") + std::string(argv[k]);
+  return command;
+}
+
 inline std::optional<int> parse_command_line(CLI::App& app, const std::string& name, int argc, const char* const* argv) {
+  invocation() = command_line(argc, argv);
   if (app.get_option_no_throw("--version") == nullptr)
     app.set_version_flag("--version", version_line(name), "print the app, the polymech version and git commit, and exit");
   app.name(name);

@@ -23,6 +23,7 @@ namespace dm = polymech::dem;
 namespace {
 
 std::int64_t total_steps = 0;  // over every run, for the rate in summary.json
+bool wrote_test4 = false;      // test4.csv, for the summary's file list
 
 // Hertz theory of the scene's impact: m*, R*, E*, approach speed.
 void hertz_of(const pm::io::DemScene& s, double& m_star, double& r_star, double& e_star, double& v) {
@@ -107,6 +108,7 @@ void run_scene(const pm::io::DemScene& s, const std::filesystem::path& out_dir, 
                       {"incidence_deg", "rebound_contact_point_deg", "rebound_centre_deg", "vx_after", "vz_after",
                        "spin_y_after"},
                       columns);
+    wrote_test4 = true;
   }
 }
 
@@ -116,6 +118,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Chung & Ooi (2011) DEM benchmark impacts against Hertz theory (seed 002 paper 2)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/dem/chung_ooi_test1.toml", "out/dem_benchmark");
+  pm::apps::refuse_option(app, "--steps", "each Chung-Ooi test runs its impacts to their end (the scene's [time])");
+  pm::apps::refuse_option(app, "--accuracy", "the Chung-Ooi tests are single spheres and pairs: there is nothing to refine");
   bool all = false;
   app.add_flag("--all", all, "run every chung_ooi_test*.toml in the scene's folder");
   if (const auto rc = pm::apps::parse_command_line(app, "dem_benchmark", argc, argv)) return *rc;
@@ -146,6 +150,10 @@ int main(int argc, char** argv) {
     j["wall_seconds"] = wall;
     j["steps"] = total_steps;
     j["steps_per_second"] = static_cast<double>(total_steps) / wall;
+    // the files it wrote, like every app's summary (issue 33 item 10)
+    nlohmann::json written = {"summary.json"};
+    if (wrote_test4) written.push_back("test4.csv");
+    j["files"] = written;
     pm::io::write_json(opt.out / "summary.json", j);
     std::printf("results in %s\n", opt.out.c_str());
     return 0;

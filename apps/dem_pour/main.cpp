@@ -42,7 +42,7 @@ void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, c
 }
 
 int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
-             const std::string& lammps_data, const std::string& command) {
+             const std::string& lammps_data) {
   const dm::Config& c = scene.config;
   const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
   pm::apps::Case cs({"dem_pour", scene.header, steps, c.dt}, opt, ropt);
@@ -51,11 +51,11 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   const auto spheres = model.sphere_count();
   std::fprintf(stderr,
                "[dem_pour] %s\n  accuracy %s: %d particles (%zu clumps, %lld spheres), radii %.3g-%.3g m, bin %.3g x %.3g x %.3g m\n"
-               "  dt = %.3g s (limit %s), %lld steps to %.3g s, %d threads\n",
+               "  dt = %.3g s (limit %s), %lld steps to %.3g s, %s\n",
                scene.header.title.c_str(), scene.header.accuracy.c_str(), scene.pour.count, model.clump_count(),
                static_cast<long long>(spheres), scene.pour.radius_min, scene.pour.radius_max, scene.pour.bin[0], scene.pour.bin[1],
                scene.pour.bin[2], c.dt, model.limit().describe().c_str(), static_cast<long long>(steps), steps * c.dt,
-               pm::kx::concurrency<pm::ExecSpace>());
+               pm::apps::thread_count().c_str());
 
   // snapshots: displacement from the start, velocity, radius and the clump each sphere belongs to
   std::vector<double> points, radius, clump(static_cast<std::size_t>(spheres), -1.0);
@@ -107,7 +107,6 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   std::vector<std::string> files = {"summary.json", "energy.csv", "fields.h5", cs.snapshots().finish().filename().string()};
 
   nlohmann::json j = cs.summary();
-  j["command"] = command;
   if (scene.pour.release_at > 0) {  // a heap: its angle, not a bed
     std::vector<std::array<double, 2>> profile;
     const double angle = dm::repose_angle(rows, scene.pour, &profile);
@@ -157,7 +156,6 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   j["wall_seconds"] = stats.wall_seconds;
   const double rate = stats.wall_seconds > 0 ? double(spheres) * double(stats.steps - cs.resume_step()) / stats.wall_seconds : 0.0;
   j["sphere_steps_per_second"] = rate;
-  j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["sphere_list_builds"] = model.sphere_list_builds();
   const int rc = cs.finish(j, stats, files);
   std::printf("%d particles (%lld spheres) poured in %.3f s simulated: packing fraction %.4f in [%.3g, %.3g] x [%.3g, %.3g] x "
@@ -179,11 +177,10 @@ int main(int argc, char** argv) {
   std::string lammps_data;
   app.add_option("--lammps-data", lammps_data, "also write the initial spheres as a LAMMPS/LIGGGHTS data file");
   if (const auto rc = pm::apps::parse_command_line(app, "dem_pour", argc, argv)) return *rc;
-  const std::string command = pm::apps::command_line(argc, argv);
   return pm::apps::guarded("dem_pour", [&] {
     pm::apps::KokkosSession kokkos(opt);
     const auto scene = pm::io::load_dem_pour_scene(opt.scene, {opt.accuracy, opt.precision});
     if (pm::apps::announce_cost("dem_pour", scene.header, scene.cost, opt)) return 0;
-    return run_case(scene, opt, ropt, lammps_data, command);
+    return run_case(scene, opt, ropt, lammps_data);
   });
 }

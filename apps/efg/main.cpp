@@ -6,7 +6,7 @@
 //       [--steps N] [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]   (the last four: dynamic)
 // Static: writes summary.json (nodes, gauss_points, handbook_factor, sif_static [[radius_m, K/(s sqrt(pi a))], ...],
 // sif_error (mean over the paths), j_path_spread, crack_opening (at the crack centre or mouth), timings,
-// shape_function_evaluations_per_second, wall_seconds), j_paths.csv and a snapshot efg.xdmf/.h5 of
+// shape_function_evaluations_per_second, wall_seconds), j_paths.csv and a snapshot fields.xdmf/.h5 of
 // the displacement at the nodes. Dynamic: summary.json (sif_stationary or sif_running, crack_opening,
 // sif_peak, energy_error, run record) and sif_history.csv; checkpoints and --restart as in
 // apps/common/restart.hpp.
@@ -143,7 +143,7 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
                   sif.k[p], sif.factor[p], scene.handbook, 100 * sif.error[p]);
   }
   const auto nodal = pm::efg::nodal_fields(model);
-  cs.snapshots(pm::apps::point_mesh(2, model.layout().nodes), "efg", true)
+  cs.snapshots(pm::apps::point_mesh(2, model.layout().nodes), "fields", true)
       .add(0, 0.0, pm::io::Fields{{"displacement", 2, nodal.displacement}, {"stress", 3, nodal.stress}});
   cs.snapshots().finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -170,7 +170,7 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
   j["wall_seconds"] = wall;
   pm::io::write_csv(cs.out() / "j_paths.csv", {"radius_m", "J_N_per_m", "K_Pa_sqrt_m", "K_factor", "handbook_factor_error"},
                     pm::io::Columns{sif.radii, sif.j, sif.k, sif.factor, sif.error});
-  cs.finish(j, {"summary.json", "j_paths.csv", "efg.h5", "efg.xdmf"});
+  cs.finish(j, {"summary.json", "j_paths.csv", "fields.h5", "fields.xdmf"});
   std::printf("efg: %d nodes, K/(s sqrt(pi a)) = %.5f (handbook %.5f, %+.2f %%), J path spread %.2f %%, %.2f s; results in %s\n",
               model.nodes(), sif.mean, scene.handbook, 100 * (sif.mean / scene.handbook - 1), 100 * sif.spread, wall, cs.out().c_str());
   return 0;
@@ -187,9 +187,12 @@ int main(int argc, char** argv) {
   if (const auto rc = pm::apps::parse_command_line(app, "efg", argc, argv)) return *rc;
   return pm::apps::guarded("efg", [&] {
     const auto scene = pm::io::load_efg_scene(opt.scene, {opt.accuracy, opt.precision});
-    if (pm::apps::announce_cost("efg", scene.header, scene.cost, opt)) return 0;
+    if (!scene.dynamic && opt.steps > 0)
+      throw std::invalid_argument("--steps " + std::to_string(opt.steps) + ": does not apply: " + opt.scene.string() +
+                                  " is a static scene (one solve); --steps sets the length of the dynamic scenes");
     if (!scene.dynamic && !ropt.restart.empty())
       throw std::invalid_argument("--restart: " + opt.scene.string() + " is a static scene (one solve: nothing to resume)");
+    if (pm::apps::announce_cost("efg", scene.header, scene.cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
     return pm::apps::with_precision(scene.header.precision, [&](auto t) { return run_case<decltype(t)>(scene, opt, ropt); });
   });

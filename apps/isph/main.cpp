@@ -7,7 +7,7 @@
 //     floating body: its state, forces and draft (models/isph/analysis.hpp);
 //   series.csv (time, PPE iterations, residual, front or pressure error, max speed; the body's),
 //   ppe_residual_history.csv (the last solve's residual after each iteration),
-//   particles.h5 / particles.xdmf snapshots (position, velocity, pressure, density, free surface).
+//   fields.h5 / fields.xdmf snapshots (position, velocity, pressure, density, free surface).
 //   isph [--scene scenes/isph/dam_break.toml] [--out out/isph] [--accuracy draft|standard|paper]
 //        [--steps N] [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]
 // The run plumbing (checkpoints, --restart, progress, snapshots, divergence) is apps/common/case.hpp.
@@ -60,7 +60,7 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt,
                  scene.header.title.c_str(), scene.case_name.c_str(), D, int(model.particles()), int(model.wall_points()),
                  c.spacing, c.dt, static_cast<long long>(steps));
   const std::int64_t snapshot_every = scene.snapshot_every > 0 ? std::max<std::int64_t>(1, std::llround(scene.snapshot_every / c.dt)) : 0;
-  cs.snapshots(pm::apps::point_mesh(D, model.host_positions()), "particles").every(snapshot_every, [&](std::int64_t) {
+  cs.snapshots(pm::apps::point_mesh(D, model.host_positions()), "fields").every(snapshot_every, [&](std::int64_t) {
       const auto s = model.host_surface();
       return pm::apps::CaseSnapshots::Fields{{"position", D, model.host_positions()}, {"velocity", D, model.host_velocities()},
                                              {"pressure", 1, model.host_pressure()}, {"density", 1, model.host_density()},
@@ -153,7 +153,7 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt,
   std::vector<double> iteration(history.size());
   for (std::size_t k = 0; k < history.size(); ++k) iteration[k] = double(k);
   pm::io::write_csv(cs.out() / "ppe_residual_history.csv", {"iteration", "relative_residual"}, pm::io::Columns{iteration, history});
-  const int rc = cs.finish(j, stats, {"summary.json", "series.csv", "ppe_residual_history.csv", cs.snapshots().finish().filename().string()});
+  const int rc = cs.finish(j, stats, {"summary.json", "series.csv", "ppe_residual_history.csv", "fields.h5", cs.snapshots().finish().filename().string()});
   if (!opt.quiet)
     std::printf("isph: %s, %lld steps in %.1f s; results in %s\n", scene.case_name.c_str(), static_cast<long long>(stats.steps),
                 stats.wall_seconds, cs.out().c_str());
@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
   if (const auto rc = pm::apps::parse_command_line(app, "isph", argc, argv)) return *rc;
   return pm::apps::guarded("isph", [&] {
     const auto scene = pm::io::load_isph_scene(opt.scene, {opt.accuracy, opt.precision});
-    if (pm::apps::announce_cost("isph", scene.header, scene.cost, opt)) return 0;
+    if (pm::apps::announce_cost("isph", scene.header, pm::apps::with_steps(scene.cost, scene.steps, opt.steps), opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
     return pm::apps::with_precision_and_dimension(scene.header.precision, scene.config.dim, [&](auto t, auto d) {
       return run_case<decltype(t), decltype(d)::value>(scene, opt, ropt);

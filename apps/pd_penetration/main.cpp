@@ -17,8 +17,7 @@ namespace np = polymech::nosb_pd;
 namespace {
 
 template <class T, int D>
-int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
-             const std::string& argv0) {
+int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt) {
   const np::Config& c = scene.config;
   const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
   char extra[96];
@@ -28,10 +27,10 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   const np::NosbPd<T, D>& plate = model.plate();
   std::fprintf(stderr,
                "[pd_penetration] %s\n  accuracy %s (spacing %.3g m, m = %g), %s precision, %d particles, %lld bonds\n"
-               "  v0 = %.1f m/s, c_v = %g, omega_v = %.3g rad/s, dt = %.3g s (limit %.3g s), up to %lld steps, %d threads\n",
+               "  v0 = %.1f m/s, c_v = %g, omega_v = %.3g rad/s, dt = %.3g s (limit %.3g s), up to %lld steps, %s\n",
                scene.header.title.c_str(), scene.header.accuracy.c_str(), c.spacing, c.horizon_ratio, scene.header.precision.c_str(),
                plate.particles(), static_cast<long long>(plate.bonds()), c.projectile.velocity, c.stabilization.c_v,
-               c.stabilization.omega_v, c.dt, scene.stable_dt, static_cast<long long>(steps), pm::kx::concurrency<pm::ExecSpace>());
+               c.stabilization.omega_v, c.dt, scene.stable_dt, static_cast<long long>(steps), pm::apps::thread_count().c_str());
 
   cs.snapshots(pm::apps::point_mesh(D, plate.host_fields().x0))
       .every(scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0, [&](std::int64_t) {
@@ -70,7 +69,6 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   const double v0 = c.projectile.velocity, vexp = scene.experiment_residual_velocity;
   auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   nlohmann::json j = cs.summary();
-  j["command"] = argv0;
   j["initial_velocity"] = v0;
   j["residual_velocity"] = num(stats.diverged ? NAN : impact.residual_velocity);
   j["perforated"] = impact.perforated;  // through and free of contact
@@ -82,7 +80,6 @@ int run_case(const pm::io::NosbPdScene& scene, const pm::apps::CommonOptions& op
   j["broken_bonds"] = model.broken_bonds();
   j["wall_seconds"] = stats.wall_seconds;
   j["short_range_list_builds"] = plate.verlet_builds();  // neighbour searches of the contact list (skin)
-  j["threads"] = pm::kx::concurrency<pm::ExecSpace>();
   j["spacing"] = c.spacing;
   j["horizon_ratio"] = c.horizon_ratio;
   j["dt"] = c.dt;
@@ -131,7 +128,6 @@ int main(int argc, char** argv) {
   pm::apps::positive<double>(app.add_option("--velocity", velocity, "impact velocity [m/s] (default: the scene's)"));
   pm::apps::non_negative<double>(app.add_option("--cv", cv, "velocity viscosity coefficient c_v (default: the scene's)"));
   if (const auto rc = pm::apps::parse_command_line(app, "pd_penetration", argc, argv)) return *rc;
-  const std::string command = pm::apps::command_line(argc, argv);
   return pm::apps::guarded("pd_penetration", [&] {
     pm::apps::KokkosSession kokkos(opt);
     pm::io::NosbPdSceneOptions so;
@@ -140,9 +136,9 @@ int main(int argc, char** argv) {
     so.velocity = velocity;
     so.c_v = cv;
     const auto scene = pm::io::load_nosb_pd_scene(opt.scene, so);
-    if (pm::apps::announce_cost("pd_penetration", scene.header, scene.cost, opt)) return 0;
+    if (pm::apps::announce_cost("pd_penetration", scene.header, pm::apps::with_steps(scene.cost, scene.steps, opt.steps), opt)) return 0;
     return pm::apps::with_precision_and_dimension(scene.header.precision, scene.config.dimension, [&](auto t, auto d) {
-      return run_case<decltype(t), decltype(d)::value>(scene, opt, ropt, command);
+      return run_case<decltype(t), decltype(d)::value>(scene, opt, ropt);
     });
   });
 }

@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Uniaxial tension of a bar, NOSB peridynamics (seed 003 section 4(1))"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/pd/tension_conforming.toml", "out/pd_tension");
+  pm::apps::refuse_option(app, "--steps", "the pull lasts loading.ramp + loading.hold wave transits of the bar (the scene's [loading])");
   bool identify = false;
   double m = 0;
   app.add_flag("--identify-omega-v", identify, "measure omega_v of eq. (3) from the undamped pull without control");

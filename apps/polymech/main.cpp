@@ -2,6 +2,7 @@
 // (io/registry.hpp), checks the scene, and hands the whole command line to the app that runs it
 // (mps_point_source or mps_harmonics, pd_tension or pd_penetration, helmholtz), next to this binary.
 //   polymech --scene scenes/pd/penetration_303.toml [the app's options ...]
+//   polymech --scene scenes/pd/penetration_303.toml --help    (the help of the app that runs it)
 //   polymech --list
 //   polymech --version
 // The app checks the options; its first line on stderr is then the notice "[polymech] SCENE -> APP"
@@ -24,7 +25,13 @@ int main(int argc, char** argv) {
   std::string scene;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
-    if (a == "--list" || a == "--help" || a == "-h") {
+    if (a == "--scene" && k + 1 < argc) scene = argv[k + 1];
+    if (a.rfind("--scene=", 0) == 0) scene = a.substr(8);
+  }
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    // with a scene, --help is the help of the app that runs it (issue 33 item 10): handed on below
+    if (a == "--list" || (scene.empty() && (a == "--help" || a == "-h"))) {
       std::printf("polymech --scene FILE [options of the app that runs it]\nscene kinds:\n");
       for (const auto& kind : pm::io::scene_kinds()) {
         std::string apps;
@@ -37,8 +44,6 @@ int main(int argc, char** argv) {
       std::printf("%s\n", pm::apps::version_line("polymech").c_str());
       return 0;
     }
-    if (a == "--scene" && k + 1 < argc) scene = argv[k + 1];
-    if (a.rfind("--scene=", 0) == 0) scene = a.substr(8);
   }
   if (scene.empty()) {
     std::fprintf(stderr, "polymech: error: give --scene FILE (polymech --list shows the scene kinds)\n");
