@@ -204,6 +204,38 @@ inline double planar_pairs(const std::vector<PlanarPoint>& pts, double r2) {
   }
   return pairs;
 }
+
+// The number of points disc_points(R, h, layout) makes, without making them: per row of the lattice the
+// cells whose centre is inside, per ring its point count (O(R / h); beyond 1e7 rows, a run that could never
+// be built, the area).
+inline double disc_point_count(double R, double h, Layout layout) {
+  if (cells(R, h) > 10000000) return kPi * (R / h) * (R / h);
+  double count = 0.0;
+  if (layout == Layout::cylindrical) {
+    const std::int64_t rings = cells(R, h);
+    const double hr = R / static_cast<double>(rings);
+    for (std::int64_t k = 0; k < rings; ++k)
+      count += static_cast<double>(std::max<std::int64_t>(3, std::llround(2.0 * kPi * (static_cast<double>(k) + 0.5) * hr / h)));
+    return count;
+  }
+  const std::int64_t m = cells(R, h);
+  for (std::int64_t j = -m; j < m; ++j) {
+    const double b = (static_cast<double>(j) + 0.5) * h;
+    // disc_points' test, a^2 + b^2 <= R^2, holds for the cells i0 .. -1 - i0 of the row (it is symmetric)
+    const auto inside = [&](std::int64_t i) {
+      const double a = (static_cast<double>(i) + 0.5) * h;
+      return a * a + b * b <= R * R;
+    };
+    if (!inside(-1)) continue;
+    const double rest = R * R - b * b;
+    auto i0 = std::max<std::int64_t>(-m, static_cast<std::int64_t>(std::ceil(-std::sqrt(std::max(0.0, rest)) / h - 0.5)));
+    while (i0 < -1 && !inside(i0)) ++i0;  // the formula's rounding, fixed by the test itself
+    while (i0 > -m && inside(i0 - 1)) --i0;
+    count += static_cast<double>(-2 * i0);  // i0 .. -1 - i0
+  }
+  return count;
+}
+
 }  // namespace detail
 
 inline LatticeSize lattice_size(const Config& c) {
@@ -237,7 +269,7 @@ inline LatticeSize lattice_size(const Config& c) {
   const double R = g.radius, area = detail::kPi * R * R;
   const bool small = detail::kPi * (R / h) * (R / h) <= 2e4;  // the exact count costs (2m + 1) P 9 m^2 distances
   const std::vector<detail::PlanarPoint> section = small ? detail::disc_points(R, h, g.layout) : std::vector<detail::PlanarPoint>{};
-  const double points = small ? static_cast<double>(section.size()) : area / (h * h);
+  const double points = detail::disc_point_count(R, h, g.layout);
   out.particles = points * static_cast<double>(layers);
   for (std::int64_t a = 0; a < layers; ++a) {  // offsets a and -a alike
     const double left = delta2 - (static_cast<double>(a) * step) * (static_cast<double>(a) * step);

@@ -80,7 +80,9 @@ def main():
             stem = os.path.join(a.out, f"cook_{element}_{n}")
             write_input(stem + ".inp", n, element)
             t0 = time.perf_counter()
-            subprocess.run(["ccx", "-i", stem], check=True, stdout=subprocess.DEVNULL, env={**os.environ, "OMP_NUM_THREADS": "1"})
+            # in the output folder: ccx leaves spooles.out in its working folder
+            subprocess.run(["ccx", "-i", os.path.basename(stem)], check=True, stdout=subprocess.DEVNULL, cwd=a.out,
+                           env={**os.environ, "OMP_NUM_THREADS": "1"})
             seconds = time.perf_counter() - t0
             u = tip_displacement(stem + ".dat")
             values.append(u)
