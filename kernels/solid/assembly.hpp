@@ -25,12 +25,15 @@ struct Triplets {
 };
 
 // What the assembly reads, on the host: element node table (elements x N^D, node ids, not encoded), node
-// coordinates (nodes x D), one Voigt stiffness per element (elements x 36) and the constrained DoFs' flags.
+// coordinates (nodes x D), one Voigt stiffness per element (elements x 36) or, when point_material is given,
+// one per quadrature point (elements x Q^D x 36, q = i + Q (j + Q k) as the kernels number the points: a
+// nonlinear law's consistent tangent, PointStiffness), and the constrained DoFs' flags.
 struct AssemblyInput {
   int dim = 3, order = 1;
   std::vector<std::int64_t> element_nodes;
   std::vector<double> coordinates;
   std::vector<double> material;
+  std::vector<double> point_material;  // non-empty: a C per point, `material` is not read
   std::vector<char> constrained;  // per DoF (D node + c)
 };
 
@@ -55,12 +58,17 @@ inline Triplets assemble_stiffness(const AssemblyInput& in) {
   std::vector<double> grad(static_cast<std::size_t>(ND) * D), Ke;
   for (std::int64_t e = 0; e < ne; ++e) {
     const std::int64_t* en = &in.element_nodes[static_cast<std::size_t>(e) * ND];
-    double C[6][6];
-    for (int i = 0; i < S; ++i)
-      for (int j = 0; j < S; ++j) C[i][j] = in.material[static_cast<std::size_t>(e) * 36 + 6 * voigt(i) + voigt(j)];
-    Ke.assign(static_cast<std::size_t>(ND * D) * (ND * D), 0.0);
     const int QD = D == 3 ? Q * Q * Q : Q * Q;
+    const bool per_point = !in.point_material.empty();
+    double C[6][6];
+    auto load_material = [&](const double* m) {
+      for (int i = 0; i < S; ++i)
+        for (int j = 0; j < S; ++j) C[i][j] = m[6 * voigt(i) + voigt(j)];
+    };
+    if (!per_point) load_material(&in.material[static_cast<std::size_t>(e) * 36]);
+    Ke.assign(static_cast<std::size_t>(ND * D) * (ND * D), 0.0);
     for (int q = 0; q < QD; ++q) {
+      if (per_point) load_material(&in.point_material[(static_cast<std::size_t>(e) * QD + q) * 36]);
       const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
       double w = 1.0, J[3][3] = {};
       for (int d = 0; d < D; ++d) w *= wq[qi[d]];

@@ -5,9 +5,11 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "materials/hill_plasticity.hpp"
 #include "materials/voigt.hpp"
 #include "solid/mesh.hpp"
 
@@ -43,6 +45,10 @@ struct Config {
   StructuredMesh<D> mesh;
   int order = 2;
   materials::Stiffness6<double> stiffness = materials::isotropic_stiffness(1.0, 0.3);  // 3D Voigt C, every element
+  // Elasto-plasticity (models/solid/elastoplastic.hpp): absent = elastic with `stiffness` (no history is
+  // allocated); present = this return mapping at every quadrature point. Its elastic stiffness law.C should
+  // equal `stiffness` (the elastic preconditioner and the linear model read `stiffness`; ElastoPlastic checks).
+  std::optional<materials::HillPlasticity<double>> plasticity;
   Plane plane = Plane::strain;  // 2D only
   std::vector<Dirichlet> dirichlet;
   std::vector<Traction> tractions;
