@@ -89,30 +89,7 @@ fem::Transfer<T> prolongation(const HexDofs& fine, const std::vector<char>& fine
                   rows[f].push_back({g, w});
               }
         }
-  fem::Transfer<T> t;
-  auto& P = t.matrix;
-  P.row_ptr = Kokkos::View<Offset*, MemSpace>("polymech::helmholtz::transfer_rows", rows.size() + 1);
-  Offset nnz = 0;
-  for (const auto& r : rows) nnz += static_cast<Offset>(r.size());
-  P.cols = View1<Index>("polymech::helmholtz::transfer_cols", nnz);
-  P.values = View1<T>("polymech::helmholtz::transfer_weights", nnz);
-  auto hr = Kokkos::create_mirror_view(P.row_ptr);
-  auto hc = Kokkos::create_mirror_view(P.cols);
-  auto hw = Kokkos::create_mirror_view(P.values);
-  Offset at = 0;
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    hr(r) = at;
-    for (const auto& [col, w] : rows[r]) {
-      hc(at) = col;
-      hw(at) = static_cast<T>(w);
-      ++at;
-    }
-  }
-  hr(rows.size()) = at;
-  Kokkos::deep_copy(P.row_ptr, hr);
-  Kokkos::deep_copy(P.cols, hc);
-  Kokkos::deep_copy(P.values, hw);
-  return t;
+  return fem::make_transfer<T>(rows);
 }
 
 // A Chebyshev polynomial in D^-1 S on the whole estimated spectrum, as a preconditioner.
