@@ -84,7 +84,8 @@
 #include <utility>
 #include <vector>
 
-namespace polymech::inverse {
+// (Namespace `estimation`, not `inverse`: polymech::inverse is the small-matrix inverse of kernels/core/small_math.hpp.)
+namespace polymech::estimation {
 
 enum class Transform { Linear, Log };
 
@@ -856,4 +857,4 @@ inline std::string describe(const Result& r) {
   return s;
 }
 
-}  // namespace polymech::inverse
+}  // namespace polymech::estimation

@@ -20,7 +20,7 @@
 
 #include "inverse/least_squares.hpp"
 
-namespace inv = polymech::inverse;
+namespace inv = polymech::estimation;
 
 namespace {
 
