@@ -4,6 +4,11 @@
 // (chunks of neighbouring cells, coloured by the parity of the chunk's block index: chunks of one colour
 // never share a node, so fem::parallel_for_batches scatters without atomics), and the nodes and faces of
 // the named sides.
+//
+// A masked lattice (StructuredMesh::active) makes elements of its active cells only; the lattice points that
+// no active cell touches are dropped and the others numbered compactly in lattice order (`node_ids`,
+// `lattice_points`), chunks without an active cell are left out, and the sides list the existing nodes and
+// the faces of active cells on them. Without a mask every table is what it was (node = lattice point).
 #pragma once
 
 #include <algorithm>
@@ -29,14 +34,26 @@ struct Discretization {
   std::vector<std::int64_t> element_nodes;    // storage order, elements x N^D (a = i + N (j + N k))
   std::vector<std::int64_t> chunk_start;      // first element of each chunk, and the end
   std::vector<std::int64_t> color_offsets;    // first chunk of each colour, and the end
+  // masked lattices only (empty: every lattice point is a node, node = lattice point, every cell active)
+  std::vector<char> active;                   // the mesh's cell mask
+  std::vector<std::int64_t> node_ids;         // lattice point -> node, -1 where no active cell touches it
+  std::vector<std::int64_t> lattice_points;   // node -> lattice point
 
   int nodes_per_element() const { return D == 3 ? n1d * n1d * n1d : n1d * n1d; }
-  std::int64_t node(const std::array<int, D>& I) const {
+  std::int64_t lattice_point(const std::array<int, D>& I) const {
     std::int64_t v = 0;
     for (int d = D - 1; d >= 0; --d) v = v * lattice[d] + I[d];
     return v;
   }
+  // The node at lattice point I (-1 on a masked lattice where the point has no node).
+  std::int64_t node(const std::array<int, D>& I) const {
+    const std::int64_t v = lattice_point(I);
+    return node_ids.empty() ? v : node_ids[static_cast<std::size_t>(v)];
+  }
+  bool cell_active(std::int64_t cell) const { return active.empty() || active[static_cast<std::size_t>(cell)] != 0; }
+  // The lattice index of node v.
   std::array<int, D> lattice_index(std::int64_t v) const {
+    if (!lattice_points.empty()) v = lattice_points[static_cast<std::size_t>(v)];
     std::array<int, D> I;
     for (int d = 0; d < D; ++d) {
       I[d] = static_cast<int>(v % lattice[d]);
@@ -71,10 +88,46 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
   s.order = order;
   s.n1d = order + 1;
   s.cells = m.cells;
-  s.nodes = 1;
+  std::int64_t points = 1;
   for (int d = 0; d < D; ++d) {
     s.lattice[d] = order * m.cells[d] + 1;
-    s.nodes *= s.lattice[d];
+    points *= s.lattice[d];
+  }
+  s.nodes = points;
+  if (m.masked()) {
+    if (static_cast<std::int64_t>(m.active.size()) != m.cell_count())
+      throw std::invalid_argument("solid: the active-cell mask has " + std::to_string(m.active.size()) +
+                                  " entries for " + std::to_string(m.cell_count()) + " cells");
+    s.active = m.active;
+    // keep the lattice points of active cells, numbered in lattice order
+    std::vector<char> used(static_cast<std::size_t>(points), 0);
+    for (std::int64_t c = 0; c < m.cell_count(); ++c) {
+      if (!m.is_active(c)) continue;
+      std::array<int, D> ci;
+      std::int64_t r = c;
+      for (int d = 0; d < D; ++d) {
+        ci[d] = static_cast<int>(r % m.cells[d]);
+        r /= m.cells[d];
+      }
+      const int ND = D == 3 ? s.n1d * s.n1d * s.n1d : s.n1d * s.n1d;
+      for (int a = 0; a < ND; ++a) {
+        std::array<int, D> I;
+        int r2 = a;
+        for (int d = 0; d < D; ++d) {
+          I[d] = order * ci[d] + r2 % s.n1d;
+          r2 /= s.n1d;
+        }
+        used[static_cast<std::size_t>(s.lattice_point(I))] = 1;
+      }
+    }
+    s.node_ids.assign(static_cast<std::size_t>(points), -1);
+    for (std::int64_t v = 0; v < points; ++v)
+      if (used[static_cast<std::size_t>(v)]) {
+        s.node_ids[static_cast<std::size_t>(v)] = static_cast<std::int64_t>(s.lattice_points.size());
+        s.lattice_points.push_back(v);
+      }
+    s.nodes = static_cast<std::int64_t>(s.lattice_points.size());
+    if (s.nodes == 0) throw std::invalid_argument("solid: the active-cell mask leaves no cell");
   }
   // node coordinates: the multilinear map of the cell that holds the node (the lowest one), at GLL positions
   const std::vector<double> gll = fem::gauss_lobatto_nodes(s.n1d);
@@ -121,7 +174,7 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
         c |= (B[d] % 2) << d;
       }
       if (c != color) continue;
-      s.chunk_start.push_back(static_cast<std::int64_t>(s.element_cells.size()));
+      const std::size_t first = s.element_cells.size();
       std::array<int, D> lo, hi;
       for (int d = 0; d < D; ++d) {
         lo[d] = B[d] * b;
@@ -135,6 +188,7 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
             for (int d = 0; d < D; ++d) ci[d] = i[d];
             std::int64_t cellid = 0;
             for (int d = D - 1; d >= 0; --d) cellid = cellid * m.cells[d] + ci[d];
+            if (!m.is_active(cellid)) continue;
             s.element_cells.push_back(cellid);
             for (int a = 0; a < ND; ++a) {
               std::array<int, D> I;
@@ -146,6 +200,7 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
               s.element_nodes.push_back(s.node(I));
             }
           }
+      if (s.element_cells.size() > first) s.chunk_start.push_back(static_cast<std::int64_t>(first));  // else: no active cell
     }
   }
   s.chunk_start.push_back(static_cast<std::int64_t>(s.element_cells.size()));
@@ -153,7 +208,8 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
   return s;
 }
 
-// Nodes of a named side (every lattice node with index 0 or the last along the side's direction).
+// Nodes of a named side (every node with lattice index 0 or the last along the side's direction; on a
+// masked lattice the existing ones).
 template <int D>
 std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::string& side) {
   const auto ds = side_of<D>(side);
@@ -167,7 +223,7 @@ std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::stri
 }
 
 // Faces of a named side: faces x N^(D-1) nodes, the other directions in increasing order, lower fastest
-// (the face-lexicographic order of fem::HexFaces).
+// (the face-lexicographic order of fem::HexFaces); on a masked lattice the faces of active cells only.
 template <int D>
 std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::string& side) {
   const auto ds = side_of<D>(side);
@@ -178,7 +234,16 @@ std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::stri
   const int fixed = ds[1] ? s.lattice[dir] - 1 : 0;
   const int n0 = s.cells[t0], n1 = D == 3 ? s.cells[t1] : 1;
   for (int c1 = 0; c1 < n1; ++c1)
-    for (int c0 = 0; c0 < n0; ++c0)
+    for (int c0 = 0; c0 < n0; ++c0) {
+      if (!s.active.empty()) {  // the cell behind the face
+        std::array<int, D> ci;
+        ci[dir] = ds[1] ? s.cells[dir] - 1 : 0;
+        ci[t0] = c0;
+        if constexpr (D == 3) ci[t1] = c1;
+        std::int64_t cell = 0;
+        for (int d = D - 1; d >= 0; --d) cell = cell * s.cells[d] + ci[d];
+        if (!s.cell_active(cell)) continue;
+      }
       for (int b = 0; b < (D == 3 ? N : 1); ++b)
         for (int a = 0; a < N; ++a) {
           std::array<int, D> I;
@@ -187,6 +252,7 @@ std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::stri
           if constexpr (D == 3) I[t1] = p * c1 + b;
           out.push_back(s.node(I));
         }
+    }
   return out;
 }
 

@@ -5,8 +5,16 @@
 // rule integrates exactly). The sides are named xmin, xmax, ymin, ymax (zmin, zmax) after the lattice
 // directions. Generators: a box or rectangle, with an optional random or smooth interior distortion; Cook's
 // membrane; a slender cantilever (a box).
+//
+// Active-cell mask: a lattice may leave cells out (`active`, one flag per cell; empty = every cell active), so
+// one lattice holds a non-convex body such as a beam standing out of its support block
+// (models/solid/micro_cantilever.hpp). The discretization makes elements of active cells only and keeps the
+// nodes they touch (models/solid/discretization.hpp); the lattice's sides stay the named boundaries, each the
+// faces of active cells that lie on it. Graded lattice planes (`graded_planes`) put fine cells where the
+// stresses concentrate.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -20,6 +28,7 @@ template <int D>
 struct StructuredMesh {
   std::array<int, D> cells{};      // cells per lattice direction
   std::vector<double> vertices;    // vertex_count x D, lattice order (direction 0 fastest)
+  std::vector<char> active;        // cell_count flags in lattice order (non-zero: active); empty: every cell
 
   std::int64_t vertex_count() const {
     std::int64_t n = 1;
@@ -36,7 +45,63 @@ struct StructuredMesh {
     for (int d = D - 1; d >= 0; --d) v = v * (cells[d] + 1) + i[d];
     return v;
   }
+  std::int64_t cell(const std::array<int, D>& c) const {
+    std::int64_t v = 0;
+    for (int d = D - 1; d >= 0; --d) v = v * cells[d] + c[d];
+    return v;
+  }
+  bool masked() const { return !active.empty(); }
+  bool is_active(std::int64_t c) const { return active.empty() || active[static_cast<std::size_t>(c)] != 0; }
+  std::int64_t active_cell_count() const {
+    if (active.empty()) return cell_count();
+    std::int64_t n = 0;
+    for (const char a : active) n += a != 0;
+    return n;
+  }
 };
+
+// Lattice planes from a to b (either order) whose cells start at `first` next to a and grow by `ratio` per
+// cell up to `largest`: the fewest cells that reach b, every size then scaled by one factor <= 1 so that the
+// last plane is b exactly (so the first cell is at most `first`). Returns the n + 1 plane positions, a first.
+inline std::vector<double> graded_planes(double a, double b, double first, double ratio, double largest) {
+  const double length = std::abs(b - a);
+  if (!(length > 0) || !(first > 0) || !(ratio >= 1.0) || !(largest >= first))
+    throw std::invalid_argument("graded planes: need a != b, first > 0, ratio >= 1, largest >= first");
+  std::vector<double> sizes;
+  double sum = 0.0, h = first;
+  while (sum < length * (1.0 - 1e-12)) {
+    sizes.push_back(h);
+    sum += h;
+    h = std::min(h * ratio, largest);
+  }
+  const double scale = length / sum, sign = b > a ? 1.0 : -1.0;
+  std::vector<double> x{a};
+  double acc = 0.0;
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    acc += sizes[k] * scale;
+    x.push_back(k + 1 == sizes.size() ? b : a + sign * acc);
+  }
+  return x;
+}
+
+// The tensor-product lattice of the given plane positions per direction (every cell a box).
+template <int D>
+StructuredMesh<D> make_tensor_box(const std::array<std::vector<double>, D>& planes) {
+  StructuredMesh<D> m;
+  for (int d = 0; d < D; ++d) {
+    if (planes[d].size() < 2) throw std::invalid_argument("solid tensor box: at least two planes per direction");
+    m.cells[d] = static_cast<int>(planes[d].size()) - 1;
+  }
+  m.vertices.resize(static_cast<std::size_t>(m.vertex_count()) * D);
+  for (std::int64_t v = 0; v < m.vertex_count(); ++v) {
+    std::int64_t r = v;
+    for (int d = 0; d < D; ++d) {
+      m.vertices[static_cast<std::size_t>(D * v + d)] = planes[d][static_cast<std::size_t>(r % (m.cells[d] + 1))];
+      r /= m.cells[d] + 1;
+    }
+  }
+  return m;
+}
 
 // Side name -> (lattice direction, 0 for the low side or 1 for the high one); -1 if unknown.
 template <int D>
