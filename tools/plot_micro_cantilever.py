@@ -41,7 +41,7 @@ def main():
     names = {0: "all three x s", 1: "L_b alone", 2: "W_b alone", 3: "H_b alone"}
     for th, style in ((0.0, "-"), (54.7356, "--")):
         for study, marker in ((0, "o"), (1, "s"), (2, "^"), (3, "v")):
-            rows = [r for r in support if r["study"] == study and abs(r["theta"] - th) < 0.01]
+            rows = [r for r in support if r["study"] == study and abs(r["theta"] - th) < 0.01 and r["relative_change"] != 0]
             if not rows:
                 continue
             # the size parameter: L_b / 1.5 (joint and L_b), W_b / 5, H_b / 3
@@ -65,6 +65,9 @@ def main():
                 continue
             ref = [r for r in mesh if r["order"] == 2 and r["direct"] == 0 and abs(r["theta"] - th) < 0.01]
             sref = min(ref, key=lambda r: r["h_root"])["sigma_root"]
+            rows = [r for r in rows if r["relative_change"] != 0]  # the reference itself
+            if not rows:
+                continue
             ax[1].loglog([r["dofs"] for r in rows], [max(abs(r["relative_change"]), 1e-7) * 100 for r in rows],
                          style + marker, label="compliance p=%d, %.1f deg" % (order, th))
             ax[1].loglog([r["dofs"] for r in rows], [max(abs(r["sigma_root"] / sref - 1), 1e-7) * 100 for r in rows],
