@@ -98,11 +98,17 @@ struct PlasticLaw {
     trial = PointArray<T>("polymech::solid::plastic_trial", ne, nq, plastic_history_size);
     tangent = PointArray<T>("polymech::solid::plastic_tangent", ne, nq, 36);
     status = Kokkos::View<int**, Kokkos::LayoutRight, MemSpace>("polymech::solid::plastic_status", ne, nq);
+    set_elastic_tangent();
+  }
+
+  // Every point's tangent = the elastic stiffness (a member function, not the constructor: nvcc's extended
+  // lambdas may not live in constructors).
+  void set_elastic_tangent() const {
     const auto tg = tangent;
-    const materials::Stiffness6<T> C = l.C;
+    const materials::Stiffness6<T> C = law.C;
+    const Index ne = static_cast<Index>(tg.extent(0)), nq = static_cast<Index>(tg.extent(1));
     Kokkos::parallel_for(
-        "polymech::solid::plastic_tangent_init",
-        Kokkos::MDRangePolicy<ExecSpace, Kokkos::Rank<2>>({0, 0}, {static_cast<Index>(ne), static_cast<Index>(nq)}),
+        "polymech::solid::plastic_tangent_init", Kokkos::MDRangePolicy<ExecSpace, Kokkos::Rank<2>>({0, 0}, {ne, nq}),
         KOKKOS_LAMBDA(const Index e, const Index q) {
           for (int k = 0; k < 36; ++k) tg(e, q, k) = C.c[k / 6][k % 6];
         });
