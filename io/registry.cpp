@@ -7,6 +7,7 @@
 #include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
+#include "io/solid_scene.hpp"
 
 namespace polymech::io {
 
@@ -52,6 +53,10 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_isph_scene(f); },
        [](const std::filesystem::path&) { return std::string("isph"); },
        [](const std::filesystem::path& f) { return load_isph_scene(f).cost; }},
+      {"solid", "finite-element solids: the 8YSZ micro-cantilever, Hill plasticity, inverse study (seed 002 paper 5)",
+       {"micro_cantilever"}, [](const std::filesystem::path& f) { load_solid_scene(f); },
+       [](const std::filesystem::path&) { return std::string("micro_cantilever"); },
+       [](const std::filesystem::path& f) { return load_solid_scene(f).cost; }},
   };
   return kinds;
 }

@@ -1,0 +1,4 @@
+# Runs EXE --scene SCENE --out OUT --threads 1 [ARGS] and prints "exit code N: <stderr>" (ctest matches it: an
+# app's exit code and its message together).
+execute_process(COMMAND ${EXE} --scene ${SCENE} --out ${OUT} --threads 1 ${ARGS} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+message("exit code ${rc}: ${err}")
