@@ -103,14 +103,14 @@ CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, b
   c.step_name = "load steps (" + format_number(curves) + (curves == 1 ? " curve)" : " curves)");
   const double real = single ? 4.0 : 8.0;
   // measured resident memory (host sparse LU of the elastic stiffness, the tangent's CSR for "direct", the
-  // per-point geometry, history and tangent): 343 MB at 17 307 DoFs and MEM_STANDARD at 50 463 (order 2)
+  // per-point geometry, history and tangent): 343 MB at 17 307 DoFs and 1.30 GB at 50 463 (order 2)
   c.bytes = 20e6 + size.dofs * (18e3 * std::pow(size.dofs / 17307.0, 0.3)) + size.points * (10.0 + (plasticity ? 50.0 : 0.0)) * real;
-  // a curve, measured on one thread (notes h-app-docs): 0.15 s at 1 260 DoFs (order 1, 6 steps), 16 s at 17 307
-  // (order 2, 12 steps), about 200 s at 50 463: a linear part (the element kernels) and one that grows like
-  // DoFs^2.3 (the CG iterations preconditioned by the elastic LU, its fill and the factorization)
-  const double per_curve = (increments / 12.0) * (2.4e-4 * size.dofs + 16.0 * std::pow(size.dofs / 17307.0, 2.3));
+  // a curve, CPU seconds on one thread (notes h-app-docs): 0.15 s at 1 260 DoFs (order 1, 6 steps), 15 s at
+  // 17 307 (order 2, 12 steps), 110 s at 50 463: a linear part (the element kernels) and one that grows like
+  // DoFs^2 (the CG iterations preconditioned by the elastic LU, its fill and the factorization)
+  const double per_curve = (increments / 12.0) * (2.4e-4 * size.dofs + 11.0 * std::pow(size.dofs / 17307.0, 2.0));
   c.seconds = curves * per_curve * (plasticity ? 1.0 : 0.3);
-  c.rate = std::string("a curve of 12 steps ~ 2.4e-4 s x DoFs + 16 s x (DoFs / 17 307)^2.3") +
+  c.rate = std::string("a curve of 12 steps ~ 2.4e-4 s x DoFs + 11 s x (DoFs / 17 307)^2") +
            (plasticity ? "" : " x 0.3 (elastic: one Newton iteration per step)") +
            " (apps/micro_cantilever, 1 thread, notes h-app-docs)";
   c.rate_threads = 1;
