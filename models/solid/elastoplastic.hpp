@@ -35,7 +35,12 @@
 //                host sparse LU, factorized every iteration;
 //   elastic_pcg: matrix-free CG on the tangent (PointStiffness apply) preconditioned by the sparse LU of the
 //                ELASTIC stiffness, factorized once per model: where the plastic zone is small, K_e^-1 K_t is
-//                the identity plus a low-rank-ish perturbation and CG needs few iterations.
+//                the identity plus a low-rank-ish perturbation and CG needs few iterations;
+//   two_level_pcg: the same CG preconditioned by one two-level p-multigrid cycle of the ELASTIC stiffness
+//                (models/solid/two_level.hpp: Chebyshev smoothing, the order-1 stiffness by sparse LU as the
+//                coarse level), set up once per model. In 3D the order-p LU fills in badly (docs/PERFORMANCE.md:
+//                5 s at 1.6e4 DoFs, minutes at 1e5) while the order-1 LU stays small, so this is the 3D choice
+//                beyond a few thousand DoFs (the micro-cantilever: docs/PERFORMANCE.md).
 // Both are exact enough (CG to a relative 1e-10) to keep Newton's quadratic convergence. Measured timings
 // are in the header of bench/bench_solid_plastic.cpp and the notes; elastic_pcg is the default.
 //
@@ -48,18 +53,20 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "solid/plastic_law.hpp"
 #include "solid/problem.hpp"
+#include "solid/two_level.hpp"
 #include "solvers/host_sparse_lu.hpp"
 #include "solvers/krylov.hpp"
 
 namespace polymech::solid {
 
-enum class TangentSolver { direct, elastic_pcg };
+enum class TangentSolver { direct, elastic_pcg, two_level_pcg };
 
 struct NewtonOptions {
   double tolerance = 1e-8;   // |r| <= tolerance * F_ref
@@ -72,6 +79,10 @@ struct NewtonOptions {
   double linear_tolerance = 1e-10;  // elastic_pcg: relative residual of CG
   double linear_accept = 1e-7;      // a CG stopped short (attainable accuracy) still serves if its true residual is below
   int linear_max_iterations = 1000;
+  // > 0: inexact Newton (Eisenstat & Walker 1996): CG only to max(linear_tolerance, min(1e-2, forcing |r| / F_ref)),
+  // loose while |r| is large, tight near convergence (superlinear; 0 keeps every solve at linear_tolerance and
+  // Newton's quadratic rate, which tests/solid/test_solid_plasticity.cpp shows)
+  double forcing = 0.0;
 };
 
 // Load-factor points (points[0] must be the model's current load factor) and increments per segment.
@@ -323,25 +334,33 @@ class ElastoPlastic : public SolidProblem<T, D> {
       detail::HostLUPreconditioner<T>{&tangent_lu_}.apply(r_, du_);
       res.linear_iterations += 1;
     } else {
-      if (!elastic_lu_pcg_) {
+      if (options_.solver == TangentSolver::two_level_pcg && !two_level_) {
+        elastic_inv_diag_ = this->op_.inverse_diagonal();
+        two_level_ = std::make_unique<TwoLevel<T, D, ElasticOperator<T, D>>>(
+            &this->op_, elastic_inv_diag_, this->config_, this->disc_, this->constrained_);
+      } else if (options_.solver == TangentSolver::elastic_pcg && !elastic_lu_pcg_) {
         const Triplets t = this->assemble_elastic();
         elastic_lu_k_.factor(t.n, t.rows, t.cols, t.values);
         elastic_lu_pcg_ = true;
       }
       Kokkos::deep_copy(du_, T(0));
       solvers::SolverOptions so;
-      so.tolerance = options_.linear_tolerance;
+      so.tolerance = linear_tolerance_;
       so.max_iterations = options_.linear_max_iterations;
-      const detail::HostLUPreconditioner<T> P{&elastic_lu_k_};
       solvers::SolveResult s;
-      if (plastic())
-        s = solvers::cg_preconditioned(
-            detail::TangentOperator<T, D, PointStiffness<T>>{this->op_.el, law_.point_stiffness(), this->op_.constrained}, P,
-            r_, du_, so);
+      const auto solve = [&](const auto& P) {
+        if (plastic())
+          return solvers::cg_preconditioned(
+              detail::TangentOperator<T, D, PointStiffness<T>>{this->op_.el, law_.point_stiffness(), this->op_.constrained},
+              P, r_, du_, so);
+        return solvers::cg_preconditioned(this->op_, P, r_, du_, so);
+      };
+      if (options_.solver == TangentSolver::two_level_pcg)
+        s = solve(*two_level_);
       else
-        s = solvers::cg_preconditioned(this->op_, P, r_, du_, so);
+        s = solve(detail::HostLUPreconditioner<T>{&elastic_lu_k_});
       res.linear_iterations += s.iterations;
-      if (!s.converged() && !(s.true_relative_residual <= options_.linear_accept)) {
+      if (!s.converged() && !(s.true_relative_residual <= std::max(options_.linear_accept, linear_tolerance_))) {
         last_failure_ = std::string("the tangent CG did not converge: ") + s.reason;
         ok = false;
       }
@@ -383,6 +402,9 @@ class ElastoPlastic : public SolidProblem<T, D> {
                         models::format_g(rn / ref) + ")";
         return false;
       }
+      linear_tolerance_ = options_.forcing > 0.0
+                              ? std::max(options_.linear_tolerance, std::min(1e-2, options_.forcing * rn / ref))
+                              : options_.linear_tolerance;
       if (!solve_tangent(res)) return false;
       const double g0 = -dot(du_, r_);  // r_ holds -r after the solve: g0 = du . r(u) = -du . K_t du < 0
       double alpha = 1.0, r_try = try_point(u, alpha, lambda);
@@ -436,6 +458,9 @@ class ElastoPlastic : public SolidProblem<T, D> {
   double lambda_ = 0.0, f_ext_free_norm_ = 0.0, f_ref_max_ = 0.0;
   solvers::HostSparseLU tangent_lu_, elastic_lu_k_;
   bool elastic_lu_ = false, elastic_lu_pcg_ = false;
+  std::unique_ptr<TwoLevel<T, D, ElasticOperator<T, D>>> two_level_;  // points to this->op_: built at the first solve
+  View1<T> elastic_inv_diag_;
+  double linear_tolerance_ = 1e-10;  // of the current tangent solve (NewtonOptions::forcing)
   Monitor monitor_;
   std::vector<std::int64_t> reaction_dofs_;
   std::array<double, 3> f_ext_sum_{0.0, 0.0, 0.0};

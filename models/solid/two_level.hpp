@@ -109,6 +109,7 @@ class TwoLevel {
       : op_(op) {
     Config<D> c1 = config;
     c1.order = 1;
+    c1.plasticity.reset();  // the coarse level is the elastic stiffness (a preconditioner of the tangent too)
     const LinearElastic<double, D> coarse(c1);
     const Triplets a1 = coarse.assemble();
     lu_ = std::make_shared<solvers::HostSparseLU>();
