@@ -236,7 +236,8 @@ SolidScene load_solid_scene(const std::filesystem::path& file, const SceneOption
     n.max_iterations = static_cast<int>(t->integer("max_iterations", n.max_iterations, 1, 1000));
     n.line_search = t->boolean("line_search", n.line_search);
     n.max_cuts = static_cast<int>(t->integer("max_cuts", n.max_cuts, 0, 30));
-    n.solver = t->choice("solver", {"elastic_pcg", "direct"}, n.solver);
+    n.solver = t->choice("solver", {"two_level_pcg", "elastic_pcg", "direct"}, n.solver);
+    n.forcing = t->real("forcing", n.forcing, Range{0.0, 1.0, false, true, "(inexact Newton's forcing term; 0: exact solves)"});
     t->finish();
   }
 

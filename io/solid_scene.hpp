@@ -59,7 +59,8 @@ struct SolidNewton {
   int max_iterations = 25;
   bool line_search = true;
   int max_cuts = 10;
-  std::string solver = "elastic_pcg";  // or "direct"
+  std::string solver = "two_level_pcg";  // or "elastic_pcg", "direct" (models/solid/elastoplastic.hpp)
+  double forcing = 0.1;                  // inexact Newton (0: every CG to 1e-10)
 };
 
 // The mesh's size in closed form.

@@ -20,9 +20,9 @@ def load(path):
 
 
 def main():
-    if len(sys.argv) < 2:
-        sys.stderr.write("usage: plot_micro_cantilever.py OUT\n")
-        return 2
+    if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
+        sys.stdout.write(__doc__)
+        return 0 if len(sys.argv) >= 2 else 2
     out = sys.argv[1]
     try:
         import matplotlib

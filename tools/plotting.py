@@ -32,6 +32,7 @@ CASE_TOOLS = {
     "helmholtz": "plot_helmholtz_run.py",
     "hydrostatic": "plot_isph.py",
     "dam_break": "plot_isph.py",
+    "micro_cantilever": "plot_micro_cantilever_run.py",
 }
 
 

@@ -68,7 +68,10 @@ so::CurveSpec curve_spec(const pm::io::SolidScene& s, double h_root) {
   c.newton.max_iterations = s.newton.max_iterations;
   c.newton.line_search = s.newton.line_search;
   c.newton.max_cuts = s.newton.max_cuts;
-  c.newton.solver = s.newton.solver == "direct" ? so::TangentSolver::direct : so::TangentSolver::elastic_pcg;
+  c.newton.solver = s.newton.solver == "direct"        ? so::TangentSolver::direct
+                    : s.newton.solver == "elastic_pcg" ? so::TangentSolver::elastic_pcg
+                                                       : so::TangentSolver::two_level_pcg;
+  c.newton.forcing = s.newton.solver == "direct" ? 0.0 : s.newton.forcing;
   return c;
 }
 

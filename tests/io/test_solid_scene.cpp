@@ -124,7 +124,7 @@ TEST(SolidScenes, BaseLoadsWithItsValuesAndDefaults) {
   EXPECT_EQ(s.header.precision, "double");
   EXPECT_DOUBLE_EQ(s.mesh.h_root, 0.2);
   EXPECT_DOUBLE_EQ(s.mesh.growth, 1.2);  // defaults
-  EXPECT_EQ(s.newton.solver, "elastic_pcg");
+  EXPECT_EQ(s.newton.solver, "two_level_pcg");
   EXPECT_EQ(s.crystal.hill_form, "yield_stress_ratio");
   ASSERT_TRUE(s.inverse.has_value());
   EXPECT_DOUBLE_EQ(s.inverse->start.C11, 320.0);
