@@ -133,8 +133,9 @@ TEST(ElastoPlastic, J2BarFollowsTheHardeningCurveAndUnloadsElastically) {
     EXPECT_NEAR(-s.reaction[0], s.applied[0], 1e-8 * smax) << "equilibrium at lambda " << s.load_factor;
     // plastic exactly when loading above the yield stress; the step that lands on sigma = sy (lambda = 2/3) is
     // either, by round-off (it differs between x86-64-v2 and FMA builds)
-    if (std::fabs(sigma / sy - 1.0) > 1e-9)
+    if (std::fabs(sigma / sy - 1.0) > 1e-9) {
       EXPECT_EQ(s.plastic_points > 0, loading && sigma > sy) << "lambda " << s.load_factor;
+    }
   }
   EXPECT_LT(worst, 1e-7);
   // residual plastic strain after unloading to zero force = eps_bar(sigma_max) (axial plastic strain = eps_bar)
