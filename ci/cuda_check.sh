@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The CUDA compile gate: build every kernel, model, app, test and benchmark with nvcc_wrapper against a
 # CUDA-enabled Kokkos, warnings as errors for project code, at -O0 (host and ptxas: the gate checks that
-# everything compiles and links, it never runs; -O3 took half as long again). io/ (free of Kokkos; toml++ does not
+# everything compiles and links, it never runs; -O3 took half as long again), through ccache (depend mode). io/ (free of Kokkos; toml++ does not
 # compile under nvcc) is compiled by the host compiler through nvcc_wrapper --host-only, and the apps
 # link it. Nothing runs on a GPU; the binaries are only compiled and linked.
 #   bash ci/cuda_check.sh
@@ -15,6 +15,11 @@ cd "$POLYMECH_ROOT"
 
 # The host packages (Eigen, GoogleTest, Google Benchmark, CMake, Ninja ...) are shared with the host build.
 apt_install "${HOST_PACKAGES[@]}"
+
+# nvcc_wrapper's calls are cached by ccache in its depend mode (CMakeLists.txt); the cache is the host
+# builds' one, paths relative to the clone (hits across clones in other folders).
+export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$POLYMECH_ROOT}"
 
 t0=$SECONDS
 log "CUDA gate: toolchain ($POLYMECH_CUDA_ROOT, host compiler $POLYMECH_CUDA_HOST_CXX)"
