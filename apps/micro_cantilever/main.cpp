@@ -188,13 +188,26 @@ int run_case(const pm::io::SolidScene& scene, const pm::apps::CommonOptions& opt
       cd.push_back(c.deflection[i]);
     }
   };
-  int rc = 0;
+  // A curve whose Newton iteration fails (the step cut max_cuts times: std::runtime_error naming the load
+  // factor reached) ends the run as "diverged" in summary.json, with the reason and the angle; the curves
+  // finished before it are kept in summary.json and curves.csv; exit code 1.
+  pm::models::RunStats stats;
   if (!inverse) {
     nlohmann::json per = nlohmann::json::array();
     for (std::size_t k = 0; k < angles.size(); ++k) {
       so::CurveSpec c = base;
       c.beam.theta_degrees = angles[k];
-      const so::LoadUnloadCurve curve = scene.plasticity ? so::load_unload_curve<T>(c, p) : elastic_curve<T>(c, p);
+      so::LoadUnloadCurve curve;
+      try {
+        curve = scene.plasticity ? so::load_unload_curve<T>(c, p) : elastic_curve<T>(c, p);
+      } catch (const std::runtime_error& e) {
+        stats.diverged = true;
+        stats.bad_step = static_cast<std::int64_t>(k);
+        stats.last_good_step = static_cast<std::int64_t>(k) - 1;
+        stats.reason = "the curve at theta = " + pm::io::format_number(angles[k]) + " deg failed: " + e.what();
+        j["failed_angle"] = angles[k];
+        break;
+      }
       progress_line(cs, angles[k], curve, k, angles.size());
       if (k == 0) j["dofs"] = curve.dofs;
       per.push_back(curve_json(scene, angles[k], curve));
@@ -259,8 +272,8 @@ int run_case(const pm::io::SolidScene& scene, const pm::apps::CommonOptions& opt
                 r.result.forward_runs, static_cast<double>(r.result.forward_runs) / angles.size(), kPaperRunsPerSpecimen,
                 r.result.wall_seconds, r.experiment_seconds);
     if (r.result.reason == est::StopReason::ModelFailure) {
-      std::fprintf(stderr, "micro_cantilever: the fit stopped: the forward model failed (%s)\n", r.result.message.c_str());
-      rc = 1;
+      stats.diverged = true;
+      stats.reason = "the fit stopped: the forward model failed (" + r.result.message + ")";
     }
   }
   pm::io::write_csv(cs.out() / "curves.csv", {"angle", "step", "force", "deflection"}, {ca, cs_, cf, cd});
@@ -271,7 +284,8 @@ int run_case(const pm::io::SolidScene& scene, const pm::apps::CommonOptions& opt
                 e["angle"].get<double>(), e["uniaxial_modulus"].get<double>(), e["compliance"].get<double>(),
                 e["peak_deflection"].get<double>(), e["residual_deflection"].is_number() ? e["residual_deflection"].get<double>() : 0.0,
                 e["newton_iterations"].get<int>(), e["wall_seconds"].get<double>());
-  cs.finish(j, files);
+  stats.steps = static_cast<std::int64_t>(j["curves"].size());
+  const int rc = cs.finish(j, stats, files);
   std::printf("results in %s\n", cs.out().c_str());
   return rc;
 }
