@@ -5,7 +5,10 @@
 // within rows); the MPS fields are per-particle gathers, but n0 (a mean, eq. (2)) is a parallel
 // reduction, so fields and energies agree to round-off. DEM spheres (sphere-sphere and sphere-facet
 // contact with friction, 300 steps) have no reduction but the exact max of the Verlet-skin check: their
-// state must be bitwise the same.
+// state must be bitwise the same. The finite-element solid (issue 34): its internal force is scattered by
+// coloured chunks (no atomics, one order of the sums per DoF), so one residual evaluation is bitwise the
+// same; an elasto-plastic load path (J2, Newton with line search, sparse LU) goes through reductions (norms,
+// the line search's slopes), so its displacements agree to round-off.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +20,8 @@
 #include "dem/benchmark.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 #include "neighbors/neighbor_search.hpp"
+#include "solid/cases.hpp"
+#include "solid/elastoplastic.hpp"
 
 namespace pm = polymech;
 namespace me = polymech::mps_elastic;
@@ -28,6 +33,8 @@ struct Results {
   std::vector<double> fields;     // u, v, theta after the steps
   std::vector<double> reductions; // energies, contact counts
   std::vector<double> dem;        // DEM spheres: x, v, omega after the steps
+  std::vector<double> solid_force;  // a residual of the elasto-plastic cantilever at a fixed displacement
+  std::vector<double> solid_u;      // its displacement after a plastic load path
 };
 
 // 27 spheres with random velocities onto a meshed wall (friction, damping, fe_surfaces).
@@ -61,6 +68,37 @@ std::vector<double> dem_spheres() {
     out.insert(out.end(), st.omega, st.omega + 3);
   }
   return out;
+}
+
+// A J2 cantilever (order 2, 8 x 2 x 2) loaded into the plastic range in 4 steps, then the residual at a fixed
+// smooth displacement field.
+void solid_cantilever(Results& r) {
+  namespace so = polymech::solid;
+  so::CantileverSpec s;
+  s.cells = {8, 2, 2};
+  s.length = 6.0;
+  s.young = 200.0;
+  s.poisson = 0.3;
+  s.force = 0.1;  // clamp bending stress 6 P L / (b h^2) = 3.6 = 1.8 x the yield stress
+  so::Config<3> c = so::cantilever(s);
+  const auto law = polymech::materials::make_j2(200.0, 0.3, 2.0, 0.1);
+  c.stiffness = law.C;
+  c.plasticity = law;
+  so::NewtonOptions o;
+  o.solver = so::TangentSolver::direct;
+  so::ElastoPlastic<double, 3> m(c, o);
+  so::LoadPath path;
+  path.points = {0.0, 1.0};
+  path.increments = {4};
+  m.run(path);
+  EXPECT_GT(m.law().counts().plastic, 0) << "the cantilever must be loaded into the plastic range";
+  r.solid_u = m.displacement_host();
+  pm::View1<double> u("u", m.dof_count()), res("r", m.dof_count());
+  auto h = Kokkos::create_mirror_view(u);
+  for (pm::Index i = 0; i < m.dof_count(); ++i) h(i) = 1e-3 * std::sin(0.37 * static_cast<double>(i));
+  Kokkos::deep_copy(u, h);
+  m.residual(u, 0.5, res);
+  r.solid_force = pm::models::to_host(res);
 }
 
 Results compute() {
@@ -107,12 +145,13 @@ Results compute() {
   const auto n = m.crack().counts();
   r.reductions = {e.kinetic, e.strain, double(n.separation), double(n.stick), double(n.slip)};
   r.dem = dem_spheres();
+  solid_cantilever(r);
   return r;
 }
 
 void write(const std::string& path, const Results& r) {
   std::ofstream o(path, std::ios::binary);
-  for (const auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem}) {
+  for (const auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem, &r.solid_force, &r.solid_u}) {
     const std::uint64_t n = v->size();
     o.write(reinterpret_cast<const char*>(&n), sizeof n);
     o.write(reinterpret_cast<const char*>(v->data()), static_cast<std::streamsize>(n * sizeof(double)));
@@ -122,7 +161,7 @@ void write(const std::string& path, const Results& r) {
 bool read(const std::string& path, Results& r) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
-  for (auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem}) {
+  for (auto* v : {&r.neighbors, &r.fields, &r.reductions, &r.dem, &r.solid_force, &r.solid_u}) {
     std::uint64_t n = 0;
     in.read(reinterpret_cast<char*>(&n), sizeof n);
     v->resize(n);
@@ -154,4 +193,11 @@ TEST(ThreadAgreement, OneAndTwoThreadsGiveTheSameResults) {
   for (std::size_t k = 0; k < now.reductions.size(); ++k)
     EXPECT_NEAR(now.reductions[k], ref.reductions[k], 1e-10 * std::abs(ref.reductions[k])) << "reduction " << k;
   EXPECT_EQ(now.dem, ref.dem);  // DEM: bitwise
+  EXPECT_EQ(now.solid_force, ref.solid_force);  // the solid's coloured scatter: bitwise
+  ASSERT_EQ(now.solid_u.size(), ref.solid_u.size());
+  double us = 0;
+  for (double v : ref.solid_u) us = std::max(us, std::abs(v));
+  ASSERT_GT(us, 0.0);
+  for (std::size_t k = 0; k < now.solid_u.size(); ++k)
+    ASSERT_NEAR(now.solid_u[k], ref.solid_u[k], 1e-10 * us) << "solid displacement " << k;
 }
