@@ -102,6 +102,7 @@ class Hyperelastic : public SolidProblem<T, D> {
                                   "sparse LU) is implemented");
     const Index n = Base::dof_count();
     u_ = View1<T>("polymech::solid::fs_displacement", n);
+    u_previous_ = View1<T>("polymech::solid::fs_previous_displacement", n);
     trial_u_ = View1<T>("polymech::solid::fs_trial_displacement", n);
     du_ = View1<T>("polymech::solid::fs_newton_increment", n);
     r_ = View1<T>("polymech::solid::fs_residual", n);
@@ -111,6 +112,9 @@ class Hyperelastic : public SolidProblem<T, D> {
   }
 
   NewtonOptions& options() { return options_; }
+  // The secant predictor (on by default): a step starts from the linear extrapolation of the last two
+  // converged states (falling back to the last one when the extrapolated state fails to evaluate).
+  void set_extrapolation(bool on) { extrapolate_ = on; }
   double load_factor() const { return lambda_; }
   const View1<T>& displacement() const { return u_; }
   std::vector<double> displacement_host() const { return models::to_host(u_); }
@@ -240,6 +244,14 @@ class Hyperelastic : public SolidProblem<T, D> {
         s);
     return std::sqrt(s);
   }
+  // du = u_n - u_n-1 on the free DoFs (the secant predictor's direction).
+  void secant_direction() {
+    const auto d = du_, a = u_, b = u_previous_;
+    Kokkos::parallel_for(
+        "polymech::solid::fs_secant", Kokkos::RangePolicy<ExecSpace>(0, Base::dof_count()),
+        KOKKOS_LAMBDA(const Index i) { d(i) = a(i) - b(i); });
+    fem::fill_constrained(this->op_.constrained, T(0), du_);
+  }
   // trial_u = u + alpha du and its residual (and tangent) into r_.
   double try_point(const View1<T>& u, double alpha, double lambda, bool tangent) {
     const auto d = du_, x = u, t = trial_u_;
@@ -296,14 +308,20 @@ class Hyperelastic : public SolidProblem<T, D> {
     res = StepResult{};
     res.load_factor = lambda;
     View1<T> u("polymech::solid::fs_newton_iterate", Base::dof_count());
+    View1<T> g_lambda("polymech::solid::fs_scaled_dirichlet", this->g_.extent(0));
+    solvers::scale(static_cast<Index>(g_lambda.extent(0)), static_cast<T>(lambda), this->g_, g_lambda);
     Kokkos::deep_copy(u, u_);
-    {
-      View1<T> g("polymech::solid::fs_scaled_dirichlet", this->g_.extent(0));
-      solvers::scale(static_cast<Index>(g.extent(0)), static_cast<T>(lambda), this->g_, g);
-      fem::set_constrained_values(this->op_.constrained, g, u);
+    fem::set_constrained_values(this->op_.constrained, g_lambda, u);
+    double rn = std::numeric_limits<double>::quiet_NaN();
+    if (extrapolate_ && have_previous_ && lambda_ != lambda_previous_) {
+      // secant predictor: u_n + (lambda - lambda_n) / (lambda_n - lambda_n-1) (u_n - u_n-1) (free DoFs)
+      secant_direction();
+      rn = try_point(u, (lambda - lambda_) / (lambda_ - lambda_previous_), lambda, true);
     }
-    Kokkos::deep_copy(du_, T(0));
-    double rn = try_point(u, 0.0, lambda, true);
+    if (!std::isfinite(rn)) {  // no predictor, or it inverted an element: start from the converged state
+      Kokkos::deep_copy(du_, T(0));
+      rn = try_point(u, 0.0, lambda, true);
+    }
     res.residuals.push_back(rn);
     for (int it = 0;; ++it) {
       if (!std::isfinite(rn)) {
@@ -347,6 +365,9 @@ class Hyperelastic : public SolidProblem<T, D> {
       res.residuals.push_back(rn);
       res.newton_iterations = it + 1;
     }
+    Kokkos::deep_copy(u_previous_, u_);
+    lambda_previous_ = lambda_;
+    have_previous_ = true;
     Kokkos::deep_copy(u_, u);
     lambda_ = lambda;
     f_ref_max_ = std::max(f_ref_max_, res.reference_force);
@@ -382,7 +403,9 @@ class Hyperelastic : public SolidProblem<T, D> {
   PressureFaces<D> pressure_;
   FiniteStrainElementData<T> elements_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> face_force_, face_stiffness_;
-  View1<T> u_, trial_u_, du_, r_, f_int_, f_load_;
+  View1<T> u_, u_previous_, trial_u_, du_, r_, f_int_, f_load_;
+  bool extrapolate_ = true, have_previous_ = false;
+  double lambda_previous_ = 0.0;
   double lambda_ = 0.0, f_ref_max_ = 0.0, energy_ = 0.0;
   solvers::HostSparseLU lu_;
   Monitor monitor_;
