@@ -3,7 +3,7 @@
 // (the same scalar mass for every displacement component, DoFs interleaved as in solid/elements.hpp) and its
 // row-sum lumped (diagonal) form
 //   m_a = sum_b int rho N_a N_b = int rho N_a dOmega   (the basis is a partition of unity),
-// the "row-sum" lumping of Hughes (The Finite Element Method, 2000, §7.3.2). For the tensor-product Lagrange
+// the "row-sum" lumping of Hughes (The Finite Element Method, 2000, ch. 7). For the tensor-product Lagrange
 // bases on GLL nodes with the Q = N Gauss rule, m_a of an affine element is rho det J times the product of
 // the 1D GLL quadrature weights of a's indices: positive for every order 1..4 (tests/solid/test_solid_dynamics
 // checks it, and that sum_a m_a = rho x volume to round-off).

@@ -11,7 +11,7 @@
 //    the predictors  u~ = a0 u_n + v_n / (beta dt) + (1 / (2 beta) - 1) a_n,
 //                    v~ = a1 u_n + (gamma / beta - 1) v_n + dt (gamma / (2 beta) - 1) a_n,
 //    and a_{n+1} = a0 u_{n+1} - u~, v_{n+1} = a1 u_{n+1} - v~, the free rows of the equation of motion at
-//    t_{n+1} give the effective system (Hughes, The Finite Element Method, 2000, §9.1, displacement form)
+//    t_{n+1} give the effective system (Hughes, The Finite Element Method, 2000, ch. 9, displacement form)
 //      [(1 + a1 beta_K) K + (a0 + a1 alpha) M]_ff u_f = [s_f f + M (u~ + alpha v~) + K (beta_K v~)]_f
 //                                                        - [M (a_c + alpha v_c) + K (u_c + beta_K v_c)]_f,
 //    the constrained DoFs carrying their exact prescribed u_c, v_c, a_c (the last bracket is their lifting).
@@ -19,12 +19,13 @@
 //    solved matrix-free with CG preconditioned by its diagonal (K's exact diagonal, the lumped mass for M's;
 //    NewmarkSolver::cg); one elastic and one mass apply per step form the right-hand side.
 //
-//  - solid::CentralDifference: explicit central differences with the lumped mass (velocity form, Hughes §9.1.3):
+//  - solid::CentralDifference: explicit central differences with the lumped mass (velocity form; Newmark's beta = 0,
+//    gamma = 1/2 member, Hughes ch. 9):
 //      v_{n+1/2} = v_n + dt/2 a_n,  u_{n+1} = u_n + dt v_{n+1/2},
 //      a_{n+1} = M_L^-1 (s_f f - K (u_{n+1} + beta_K v_{n+1/2})) - alpha v_{n+1/2},  v_{n+1} = v_{n+1/2} + dt/2 a_{n+1}
 //    (one fused matrix-free elastic apply and two vector kernels per step). Conditionally stable: dt <=
 //    dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi), xi = alpha / (2 omega_max) + beta_K omega_max / 2 the damping
-//    ratio of the highest mode (Hughes §9.3, Belytschko et al. 2014 eq. 6.3.37), omega_max^2 the largest
+//    ratio of the highest mode (Hughes ch. 9; Belytschko, Liu, Moran & Elkhodary 2014, §6.3), omega_max^2 the largest
 //    eigenvalue of M_L^-1 K, estimated by power iteration (its Rayleigh quotient is a lower bound, so the
 //    estimate of dt_crit is an upper bound: the safety factor, 0.9 by default, covers the gap). A requested
 //    dt above the estimate is refused with std::invalid_argument unless `allow_unstable`.
@@ -389,9 +390,8 @@ class Newmark : public SolidDynamics<T, D> {
           ut(i) = c0 * u(i) + c2 * v(i) + c3 * a(i);
           vt(i) = c1 * u(i) + c4 * v(i) + c5 * a(i);
         });
-    View1<T> u1 = this->work_;  // u_{n+1} target (work_ is free now), then overwritten by the solve
-    // remember u_n and v_n for the energy increments: ut, vt hold what we need (u_n = (ut - c2 v - c3 a) / c0 is
-    // not stable to recover), so keep copies when tracking
+    const View1<T> u1 = this->work_;  // u_{n+1}: work_ is free again once the right-hand side is formed
+    // u_n and v_n for the energy increments (kept only when tracking)
     if (track) {
       if (un_.extent(0) == 0) {
         un_ = View1<T>("polymech::solid::newmark_un", n);
@@ -423,7 +423,12 @@ class Newmark : public SolidDynamics<T, D> {
       lu_.solve(b.data());
       this->copy_in(b, u1);
     } else {
-      Kokkos::deep_copy(u1, u);  // the previous displacement as the initial guess (constrained rows exact)
+      // initial guess: the constant-acceleration predictor u_n + dt v_n + dt^2 / 2 a_n (constrained rows exact)
+      const T dt = T(dt_), h2 = T(0.5 * dt_ * dt_);
+      Kokkos::parallel_for(
+          "polymech::solid::newmark_guess", range(n), KOKKOS_LAMBDA(const Index i) {
+            u1(i) = fixed(i) ? u(i) : u(i) + dt * v(i) + h2 * a(i);
+          });
       const ShiftedOperator op{this->op_.el, this->op_.constrained, T(cK_), T(cM_), static_cast<T>(this->opt_.density)};
       const auto r = solvers::cg(op, inv_diag_, rhs_, u1, nopt_.cg);
       if (!r.converged()) throw std::runtime_error("solid::Newmark: the effective-system CG failed at t = " + models::format_g(t1) + ": " + r.reason);

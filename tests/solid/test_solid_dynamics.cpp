@@ -175,20 +175,22 @@ TEST(SolidDynamicsBar, PeriodNewmarkAndCentralDifferences) {
   std::vector<double> err_nm, err_cd;
   for (int n : {8, 16}) {
     so::DynamicsOptions o;
+    o.track_energy = false;  // fewer kernels per step (the ctest budget)
     so::Newmark<double, 2> nm(bar(1, n), o, T / 400.0);
     nm.set_initial(first_mode());
-    const double Pn = tip_period(nm, 2.6 * T);
+    const double Pn = tip_period(nm, 2.1 * T);
     so::CentralDifference<double, 2> cd(bar(1, n), o);
     cd.set_initial(first_mode());
-    const double Pc = tip_period(cd, 2.6 * T);
+    const double Pc = tip_period(cd, 2.1 * T);
     std::printf("bar p=1 n=%2d: Newmark period %.6f (%+.2e), central differences period %.6f (%+.2e, dt %.4f = 0.9 dt_crit, "
                 "omega_max %.3f in %d power iterations)\n",
                 n, Pn, Pn / T - 1.0, Pc, Pc / T - 1.0, cd.time_step(), cd.omega_max(), cd.power_iterations_used());
     err_nm.push_back(std::fabs(Pn / T - 1.0));
     err_cd.push_back(std::fabs(Pc / T - 1.0));
   }
-  // measured: Newmark -1.5e-3, -3.6e-4 (the consistent mass stiffens: period short, (k h)^2 / 24); central
-  // differences +1.6e-3, +4.0e-4 (the lumped mass softens)
+  // measured: Newmark -1.58e-3, -3.81e-4 (the consistent mass stiffens: period short by about (k h)^2 / 24);
+  // central differences +7.7e-4, +7.6e-5 (the lumped mass softens, the central-difference step shortens the period:
+  // the two partly cancel)
   EXPECT_LT(err_nm[0], 3e-3);
   EXPECT_LT(err_cd[0], 3e-3);
   EXPECT_LT(err_nm[1], 8e-4);
@@ -196,9 +198,11 @@ TEST(SolidDynamicsBar, PeriodNewmarkAndCentralDifferences) {
   EXPECT_GT(err_nm[0] / err_nm[1], 3.0);
   EXPECT_GT(err_cd[0] / err_cd[1], 3.0);
   // order 2: much closer on a coarse mesh
-  so::Newmark<double, 2> nm2(bar(2, 4), so::DynamicsOptions{}, T / 400.0);
+  so::DynamicsOptions quiet;
+  quiet.track_energy = false;
+  so::Newmark<double, 2> nm2(bar(2, 4), quiet, T / 200.0);
   nm2.set_initial(first_mode());
-  const double P2 = tip_period(nm2, 2.6 * T);
+  const double P2 = tip_period(nm2, 2.1 * T);
   std::printf("bar p=2 n=4: Newmark period %.6f (%+.2e)\n", P2, P2 / T - 1.0);
   EXPECT_NEAR(P2 / T, 1.0, 2e-4);
 }
@@ -218,14 +222,14 @@ TEST(SolidDynamicsEnergy, NewmarkConservesCentralDifferencesBounded) {
   nm.step();
   const double E0 = nm.energies().initial;
   double worst = 0.0;
-  for (int k = 0; k < 1000; ++k) {
+  for (int k = 0; k < 500; ++k) {
     nm.step();
     if (k % 50 == 49) worst = std::fmax(worst, std::fabs(nm.energies().total() / E0 - 1.0));
   }
   const so::Energies e = nm.energies();
-  std::printf("Newmark energy over 1000 steps (rough start): E0 %.6e, worst |E / E0 - 1| %.1e, balance %.1e\n", E0, worst,
+  std::printf("Newmark energy over 500 steps (rough start): E0 %.6e, worst |E / E0 - 1| %.1e, balance %.1e\n", E0, worst,
               e.balance_error());
-  EXPECT_LT(worst, 1e-10);  // measured ~1e-14
+  EXPECT_LT(worst, 1e-10);  // measured 1.1e-13
   EXPECT_LT(std::fabs(e.balance_error()), 1e-10);
 
   so::CentralDifference<double, 2> cd(c, o);
@@ -233,25 +237,27 @@ TEST(SolidDynamicsEnergy, NewmarkConservesCentralDifferencesBounded) {
   cd.step();
   const double C0 = cd.energies().initial;
   double cworst = 0.0;
-  for (int k = 0; k < 2000; ++k) {
+  for (int k = 0; k < 1000; ++k) {
     cd.step();
     if (k % 10 == 9) cworst = std::fmax(cworst, std::fabs(cd.energies().total() / C0 - 1.0));
   }
-  std::printf("central differences energy over 2000 steps (dt %.4f): worst |E / E0 - 1| %.2e\n", cd.time_step(), cworst);
-  EXPECT_LT(cworst, 2e-2);
+  std::printf("central differences energy over 1000 steps (dt %.4f): worst |E / E0 - 1| %.2e\n", cd.time_step(), cworst);
+  EXPECT_LT(cworst, 2e-2);  // measured 1.33e-2 (the energy of central differences oscillates at O((omega dt)^2))
 }
 
 // (d) Newmark is second order in dt: the error at t = 1 against a fine-dt reference falls by ~4 per halving.
 TEST(SolidDynamicsNewmark, SecondOrderInTime) {
   const double t_end = 1.5;
+  so::DynamicsOptions quiet;
+  quiet.track_energy = false;
   auto run = [&](double dt) {
-    so::Newmark<double, 2> m(bar(2, 4), so::DynamicsOptions{}, dt);
+    so::Newmark<double, 2> m(bar(2, 4), quiet, dt);
     m.set_initial(first_mode());
     const long steps = std::lround(t_end / dt);
     m.advance(steps);
     return pm::models::to_host(m.displacement());
   };
-  const std::vector<double> ref = run(t_end / 3200.0);
+  const std::vector<double> ref = run(t_end / 800.0);
   std::vector<double> err;
   for (int n : {25, 50, 100}) {
     const auto u = run(t_end / n);
@@ -287,10 +293,11 @@ TEST(SolidDynamicsCentralDifference, StabilityLimit) {
   auto growth = [&](double factor) {
     so::ExplicitOptions e;
     e.allow_unstable = true;
-    so::CentralDifference<double, 2> m(c, o, factor * dtc, e);
+    so::DynamicsOptions quiet;
+    quiet.track_energy = false;
+    so::CentralDifference<double, 2> m(c, quiet, factor * dtc, e);
     m.set_state(rough(m.dof_count(), 1e-3), {});
-    m.step();
-    const double E0 = m.energies().initial;
+    const double E0 = m.energies().total();
     double worst = 0.0;
     for (int k = 0; k < 400; ++k) {
       m.step();
@@ -302,8 +309,8 @@ TEST(SolidDynamicsCentralDifference, StabilityLimit) {
   const double unstable = growth(1.05), stable = growth(0.9);
   std::printf("central differences, 400 steps from a rough start: max E / E0 = %.3e at 1.05 dt_crit, %.3f at 0.9 dt_crit\n",
               unstable, stable);
-  EXPECT_GT(unstable, 1e6);
-  EXPECT_LT(stable, 10.0);
+  EXPECT_GT(unstable, 1e6);  // measured 2.7e30
+  EXPECT_LT(stable, 10.0);    // measured 0.88
 }
 
 // (f) Rayleigh damping: the decay of the fundamental mode gives zeta = alpha / (2 omega) + beta_K omega / 2.
@@ -317,30 +324,39 @@ TEST(SolidDynamicsDamping, RayleighDecay) {
   o.rayleigh_mass = zeta * omega;          // alpha / (2 omega) = zeta / 2
   o.rayleigh_stiffness = zeta / omega;     // beta_K omega / 2 = zeta / 2
   const double period = 2.0 * pi / omega;
-  so::Newmark<double, 2> m(c, o, period / 200.0);
-  m.set_initial(first_mode());
-  const pm::Index tip = dof_near<2>(m, {1.0, 0.0}, 0);
-  std::vector<double> y{value_at(m.displacement(), tip)};
-  for (int k = 0; k < 200 * 6; ++k) {
-    m.step();
-    y.push_back(value_at(m.displacement(), tip));
-  }
-  // positive peaks, refined by a parabola through the three samples
-  std::vector<double> peaks;
-  for (std::size_t k = 1; k + 1 < y.size(); ++k)
-    if (y[k] > y[k - 1] && y[k] >= y[k + 1] && y[k] > 0.0) {
-      const double a = 0.5 * (y[k - 1] + y[k + 1]) - y[k], bb = 0.5 * (y[k + 1] - y[k - 1]);
-      peaks.push_back(y[k] - bb * bb / (4.0 * a));
+  // the logarithmic decrement of the tip's positive peaks (refined by a parabola through three samples)
+  auto decay = [&](auto& m, long steps) {
+    m.set_initial(first_mode());
+    const pm::Index tip = dof_near<2>(m, {1.0, 0.0}, 0);
+    std::vector<double> y{value_at(m.displacement(), tip)};
+    for (long k = 0; k < steps; ++k) {
+      m.step();
+      y.push_back(value_at(m.displacement(), tip));
     }
-  ASSERT_GE(peaks.size(), 4u);
-  const double delta = std::log(peaks.front() / peaks.back()) / static_cast<double>(peaks.size() - 1);
-  const double measured = delta / std::sqrt(4.0 * pi * pi + delta * delta);
-  const so::Energies e = m.energies();
-  std::printf("Rayleigh damping: zeta %.5f measured over %zu peaks (expected %.5f, %+.2e); dissipated %.4e of %.4e, "
-              "balance %.1e\n",
-              measured, peaks.size(), zeta, measured / zeta - 1.0, e.dissipated, e.initial, e.balance_error());
-  EXPECT_NEAR(measured / zeta, 1.0, 0.03);
-  EXPECT_LT(std::fabs(e.balance_error()), 1e-9);
+    std::vector<double> peaks;
+    for (std::size_t k = 1; k + 1 < y.size(); ++k)
+      if (y[k] > y[k - 1] && y[k] >= y[k + 1] && y[k] > 0.0) {
+        const double a = 0.5 * (y[k - 1] + y[k + 1]) - y[k], bb = 0.5 * (y[k + 1] - y[k - 1]);
+        peaks.push_back(y[k] - bb * bb / (4.0 * a));
+      }
+    EXPECT_GE(peaks.size(), 4u);
+    if (peaks.size() < 2) return 0.0;
+    const double delta = std::log(peaks.front() / peaks.back()) / static_cast<double>(peaks.size() - 1);
+    return delta / std::sqrt(4.0 * pi * pi + delta * delta);
+  };
+  so::Newmark<double, 2> m(c, o, period / 200.0);
+  const double measured = decay(m, 200 * 5);
+  so::CentralDifference<double, 2> cd(c, o);
+  const double measured_cd = decay(cd, std::lround(5.0 * period / cd.time_step()));
+  const so::Energies e = m.energies(), ec = cd.energies();
+  std::printf("Rayleigh damping: zeta %.5f (Newmark), %.5f (central differences, dt %.4f), expected %.5f (%+.2e, %+.2e); "
+              "Newmark dissipated %.4e of %.4e, balance %.1e; central differences balance %.1e\n",
+              measured, measured_cd, cd.time_step(), zeta, measured / zeta - 1.0, measured_cd / zeta - 1.0, e.dissipated,
+              e.initial, e.balance_error(), ec.balance_error());
+  EXPECT_NEAR(measured / zeta, 1.0, 0.03);  // measured -1.6e-4
+  EXPECT_NEAR(measured_cd / zeta, 1.0, 0.03);  // measured +3.4e-4
+  EXPECT_LT(std::fabs(ec.balance_error()), 2e-2);  // measured 7.9e-8
+  EXPECT_LT(std::fabs(e.balance_error()), 1e-9);   // measured 7.6e-12
 }
 
 // Base excitation: the clamped end of the bar moves axially as g s(t), s = sin(w t), from rest: the prescribed
@@ -369,6 +385,22 @@ TEST(SolidDynamicsBaseMotion, PrescribedRootMotion) {
   EXPECT_GT(e.kinetic + e.strain, 0.0);
   // the prescribed DoFs' du is not exactly dt (v_n + v_{n+1}) / 2: the balance holds to O(dt^2)
   EXPECT_LT(std::fabs(e.balance_error()), 1e-3);
+  // central differences under the same motion: the root follows exactly, the response agrees with Newmark's
+  so::CentralDifference<double, 2> cd(c, o);
+  const long steps = std::lround(4.0 / cd.time_step());
+  so::Newmark<double, 2> nm(c, o, 4.0 / static_cast<double>(steps));
+  cd.advance(steps);
+  nm.advance(steps);
+  const pm::Index tip = dof_near<2>(m, {1.0, 0.0}, 0);
+  const double tip_cd = value_at(cd.displacement(), tip), tip_nm = value_at(nm.displacement(), tip);
+  const so::Energies ec = cd.energies();
+  std::printf("base motion, t = %.3f: tip u %.6e (central differences, %ld steps) %.6e (Newmark), root %.9e; central "
+              "differences balance %.1e\n",
+              cd.time(), tip_cd, steps, tip_nm, value_at(cd.displacement(), root), ec.balance_error());
+  EXPECT_NEAR(value_at(cd.displacement(), root), 1e-2 * std::sin(w * cd.time()), 1e-15);
+  // lumped vs consistent mass, different time errors: measured 0.75 % apart (tip amplitude 3.3e-2)
+  EXPECT_NEAR(tip_cd / tip_nm, 1.0, 0.02);
+  EXPECT_LT(std::fabs(ec.balance_error()), 2e-2);
 }
 
 // (g) A slender cantilever's first bending frequency against Euler-Bernoulli: omega_1 = 1.8751^2 sqrt(E I / (rho A L^4)).
@@ -389,7 +421,7 @@ TEST(SolidDynamicsCantilever, FirstBendingFrequency) {
   const double beta1 = 1.87510407;
   const double eb = beta1 * beta1 * std::sqrt(E * (h * h * h * h / 12.0) / (rho * h * h * L * L * L * L));
   std::printf("cantilever L/h = 20, p = 2: omega_1 %.6f, Euler-Bernoulli %.6f (%+.2e)\n", omega, eb, omega / eb - 1.0);
-  EXPECT_NEAR(omega / eb, 1.0, 0.02);
+  EXPECT_NEAR(omega / eb, 1.0, 0.02);  // measured -1.6e-3 (shear and rotary inertia lower it)
 }
 
 // The matrix-free CG path of Newmark follows the factorized one (3D, order 2, damped, loaded by a ramped traction).
