@@ -214,8 +214,9 @@ class SolidDynamics : public SolidProblem<T, D> {
   // The energies at the current state (kinetic with the consistent mass unless `lumped`).
   Energies energies() const { return energies_with(lumped_kinetic_); }
 
- protected:
-  bool lumped_kinetic_ = false;  // the kinetic energy with M_L (central differences)
+ public:
+  // Implementation. (Public only because nvcc's extended lambdas may not live in private or protected member
+  // functions, docs/DEVELOPING.md.)
 
   Energies energies_with(bool lumped) const {
     Energies e = energy_;
@@ -280,6 +281,8 @@ class SolidDynamics : public SolidProblem<T, D> {
         });
   }
 
+ protected:
+  bool lumped_kinetic_ = false;  // the kinetic energy with M_L (central differences)
   DynamicsOptions opt_;
   View1<T> u_, v_, a_, work_, work2_, mass_, g_full_;
   View1<char> is_fixed_;
@@ -451,7 +454,9 @@ class Newmark : public SolidDynamics<T, D> {
     for (long k = 0; k < steps; ++k) step();
   }
 
- private:
+ public:
+  // Implementation. (Public only because nvcc's extended lambdas may not live in private or protected member
+  // functions, docs/DEVELOPING.md.)
   // y = cK K x + cM M x on the free DoFs, x on the constrained ones (SPD).
   struct ShiftedOperator {
     using value_type = T;
@@ -560,6 +565,7 @@ class Newmark : public SolidDynamics<T, D> {
     this->energy_.dissipated_step = diss;
   }
 
+ private:
   NewmarkOptions nopt_;
   double dt_;
   double c0_, c1_, c2_, c3_, c4_, c5_, cK_, cM_;
@@ -672,7 +678,9 @@ class CentralDifference : public SolidDynamics<T, D> {
     for (long k = 0; k < steps; ++k) step();
   }
 
- private:
+ public:
+  // Implementation. (Public only because nvcc's extended lambdas may not live in private or protected member
+  // functions, docs/DEVELOPING.md.)
   // a = (s_f f - work2) / m - alpha vh on the free DoFs (work2 = K (u + beta_K vh)).
   void accelerate(double sf, const View1<T>& vh) {
     const auto a = this->a_, y = this->work2_, f = this->f_ext_, m = this->mass_;
@@ -786,6 +794,7 @@ class CentralDifference : public SolidDynamics<T, D> {
     dt_crit_ = 2.0 / omega_max_ * (std::sqrt(1.0 + xi * xi) - xi);
   }
 
+ private:
   ExplicitOptions eopt_;
   double dt_ = 0.0, dt_crit_ = 0.0, omega_max_ = 0.0;
   int power_its_ = 0;
