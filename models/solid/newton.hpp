@@ -27,7 +27,8 @@
 // of the secant of g through 0 and alpha, safeguarded to [0.1, 0.9] alpha (a failed evaluation halves alpha), at
 // most max_line_search times. The residual norm |r| is not the merit: Newton's first step of a plastic increment
 // often raises |r| and still converges. The last evaluation is the accepted one, so its trial state and tangent
-// are what the next iteration uses. Without the line search a failed evaluation still halves alpha.
+// are what the next iteration uses. A step starts from the last converged state, or from the secant predictor
+// (NewtonOptions::secant_predictor). Without the line search a failed evaluation still halves alpha.
 //
 // What a model supplies (CRTP: class M : public NewtonSolid<T, D, M>; the hooks public or the base a friend):
 //   double evaluate(const View1<T>& u, double lambda, const View1<T>& r)
@@ -75,6 +76,11 @@ struct NewtonOptions {
   // loose while |r| is large, tight near convergence (superlinear; 0 keeps every solve at linear_tolerance and
   // Newton's quadratic rate, which tests/solid/test_solid_plasticity.cpp shows)
   double forcing = 0.0;
+  // A step starts from the secant extrapolation of the last two converged states, u_n + (lambda - lambda_n) /
+  // (lambda_n - lambda_n-1) (u_n - u_n-1) on the free DoFs, or from u_n when that fails to evaluate (an inverted
+  // element). Measured on the finite-strain model: the elastica 113 -> 57 Newton iterations; off by default for
+  // the elasto-plastic model (its curves are documented without it).
+  bool secant_predictor = false;
 };
 
 // Load-factor points (points[0] must be the model's current load factor) and increments per segment.
@@ -197,6 +203,15 @@ class NewtonSolid : public SolidProblem<T, D> {
     return model().evaluate(trial_u_, lambda, r_);
   }
 
+  // du = u_n - u_n-1 on the free DoFs (the secant predictor's direction).
+  void secant_direction() {
+    const auto d = du_, a = u_, b = u_previous_;
+    Kokkos::parallel_for(
+        "polymech::solid::secant_direction", Kokkos::RangePolicy<ExecSpace>(0, Base::dof_count()),
+        KOKKOS_LAMBDA(const Index i) { d(i) = a(i) - b(i); });
+    fem::fill_constrained(this->op_.constrained, T(0), du_);
+  }
+
   // |v| over the free DoFs.
   double free_norm(const View1<T>& v) const {
     View1<T> w("polymech::solid::free_copy", Base::dof_count());
@@ -243,8 +258,15 @@ class NewtonSolid : public SolidProblem<T, D> {
       solvers::scale(static_cast<Index>(g.extent(0)), static_cast<T>(lambda), this->g_, g);
       fem::set_constrained_values(this->op_.constrained, g, u);
     }
-    Kokkos::deep_copy(du_, T(0));
-    double rn = try_point(u, 0.0, lambda);
+    double rn = std::numeric_limits<double>::quiet_NaN();
+    if (options_.secant_predictor && have_previous_ && lambda_ != lambda_previous_) {
+      secant_direction();
+      rn = try_point(u, (lambda - lambda_) / (lambda_ - lambda_previous_), lambda);
+    }
+    if (!std::isfinite(rn)) {  // no predictor, or it failed to evaluate: start from the converged state
+      Kokkos::deep_copy(du_, T(0));
+      rn = try_point(u, 0.0, lambda);
+    }
     auto reference = [&] {
       const double f = std::max({model().load_norm(lambda), reaction_norm(), 1e-2 * f_ref_max_});
       return f > 0.0 ? f : 1.0;
@@ -300,6 +322,12 @@ class NewtonSolid : public SolidProblem<T, D> {
       res.newton_iterations = it + 1;
     }
     // converged: commit
+    if (options_.secant_predictor) {
+      if (u_previous_.extent(0) != u_.extent(0)) u_previous_ = View1<T>("polymech::solid::previous_displacement", u_.extent(0));
+      Kokkos::deep_copy(u_previous_, u_);
+      lambda_previous_ = lambda_;
+      have_previous_ = true;
+    }
     Kokkos::deep_copy(u_, u);
     lambda_ = lambda;
     f_ref_max_ = std::max(f_ref_max_, res.reference_force);
@@ -321,6 +349,9 @@ class NewtonSolid : public SolidProblem<T, D> {
 
   std::string name_;
   double lambda_ = 0.0, f_ref_max_ = 0.0;
+  View1<T> u_previous_;  // the converged state before the last one (secant_predictor only)
+  double lambda_previous_ = 0.0;
+  bool have_previous_ = false;
   double linear_tolerance_ = 1e-10;
   Monitor monitor_;
   std::vector<std::int64_t> reaction_dofs_;
