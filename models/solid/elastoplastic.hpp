@@ -63,22 +63,6 @@ struct TangentOperator {
   }
 };
 
-// z = K_e^-1 r with the host sparse LU of the constrained elastic stiffness.
-template <class T>
-struct HostLUPreconditioner {
-  const solvers::HostSparseLU* lu = nullptr;
-  void apply(const View1<T>& r, const View1<T>& z) const {
-    // a separate host copy: on a host memory space create_mirror_view_and_copy would alias r
-    Kokkos::View<T*, HostSpace> h("polymech::solid::lu_rhs", r.extent(0));
-    Kokkos::deep_copy(h, r);
-    std::vector<double> b(h.extent(0));
-    for (std::size_t i = 0; i < b.size(); ++i) b[i] = static_cast<double>(h(i));
-    lu->solve(b.data());
-    for (std::size_t i = 0; i < b.size(); ++i) h(i) = static_cast<T>(b[i]);
-    Kokkos::deep_copy(z, h);
-  }
-};
-
 }  // namespace detail
 
 template <class T, int D = 3>

