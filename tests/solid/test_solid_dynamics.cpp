@@ -28,6 +28,18 @@ namespace so = polymech::solid;
 
 namespace {
 
+// A unit 2D block of nx x ny order-2 cells, E = 1, nu = 0.3, clamped on xmin.
+so::Config<2> clamped_block(int nx, int ny) {
+  so::BoxSpec b;
+  b.cells = {nx, ny, 1};
+  so::Config<2> c;
+  c.mesh = so::make_box<2>(b);
+  c.order = 2;
+  c.stiffness = pm::materials::isotropic_stiffness(1.0, 0.3);
+  c.dirichlet.push_back({"xmin", 3u, {}});
+  return c;
+}
+
 constexpr double pi = 3.14159265358979323846;
 
 // A fixed-free bar [0, L] x [0, h], plane stress, nu = 0, clamped at x = 0 (c = sqrt(E / rho) = 1, L = 1).
@@ -209,13 +221,7 @@ TEST(SolidDynamicsBar, PeriodNewmarkAndCentralDifferences) {
 
 // (c) Energy: Newmark (average acceleration) conserves it to round-off; central differences keep it bounded.
 TEST(SolidDynamicsEnergy, NewmarkConservesCentralDifferencesBounded) {
-  so::BoxSpec b;
-  b.cells = {4, 3, 1};
-  so::Config<2> c;
-  c.mesh = so::make_box<2>(b);
-  c.order = 2;
-  c.stiffness = pm::materials::isotropic_stiffness(1.0, 0.3);
-  c.dirichlet.push_back({"xmin", 3u, {}});
+  const so::Config<2> c = clamped_block(4, 3);
   so::DynamicsOptions o;
   so::Newmark<double, 2> nm(c, o, 0.05);
   nm.set_state(rough(nm.dof_count(), 1e-2), {});
@@ -277,13 +283,7 @@ TEST(SolidDynamicsNewmark, SecondOrderInTime) {
 
 // (e) Central differences above / below the critical step from power iteration.
 TEST(SolidDynamicsCentralDifference, StabilityLimit) {
-  so::BoxSpec b;
-  b.cells = {4, 4, 1};
-  so::Config<2> c;
-  c.mesh = so::make_box<2>(b);
-  c.order = 2;
-  c.stiffness = pm::materials::isotropic_stiffness(1.0, 0.3);
-  c.dirichlet.push_back({"xmin", 3u, {}});
+  const so::Config<2> c = clamped_block(4, 4);
   so::DynamicsOptions o;
   so::CentralDifference<double, 2> probe(c, o);
   const double dtc = probe.critical_time_step();
