@@ -223,6 +223,11 @@ setup_host() {
   # compiler output cached across runs (CMakeLists.txt uses ccache when it finds it)
   export CCACHE_DIR="${CCACHE_DIR:-$POLYMECH_CACHE/ccache}"
   export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$POLYMECH_ROOT}"  # hits across clones in other folders
+  # The sanitizer build has debug info (-g1), and with -g ccache hashes the working directory too, so every
+  # clone missed: the stage took 19 of its 21 minutes compiling (2026-11-26). Without it the cached objects'
+  # debug info names the folder of the clone that compiled them first (the sanitizers' stack traces still name
+  # the right files, relative to base_dir).
+  export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 }
 
 # --- CUDA compile gate (ci/cuda_check.sh) ----------------------------------------------------------
