@@ -258,7 +258,7 @@ TEST(PiezoAnalytic, MultiModeNearFirstResonance) {
 
 TEST(PiezoAnalytic, StaticBimorphBender) {
   // Hwang & Park 1993 (after Tzou & Tseng 1990): PVDF, L = 100 mm, two 0.5 mm layers in series, 100 V
-  const pz::Pvdf pv;
+  const pz::Pvdf pv{};
   const double L = 0.1, t = 1e-3, V = 100.0, b = 5e-3;
   const double textbook = pz::series_bimorph_tip_deflection(pv.d31, V, L, t);
   EXPECT_NEAR(textbook, 3.3e-5, 1e-15);  // 3 * 2.2e-11 * 100 * 0.01 / (2 * 1e-6); 3.3e-7 m per volt
