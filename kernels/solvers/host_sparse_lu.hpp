@@ -8,6 +8,7 @@
 // models/isph/ppe_two_level.hpp) includes only this header.
 #pragma once
 
+#include <complex>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -30,6 +31,29 @@ class HostSparseLU {
               const std::vector<double>& values);
   // x <- A^-1 x, x holding size() values. Throws std::logic_error before a successful factor().
   void solve(double* x) const;
+  std::int64_t size() const { return n_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::int64_t n_ = 0;
+};
+
+// The same for a complex matrix (the harmonic solves of the piezoelectric harvester, models/piezo: the
+// dynamic stiffness -w^2 M + i w C + K with the circuit's admittance is complex symmetric, not Hermitian).
+class HostSparseLUComplex {
+ public:
+  using Complex = std::complex<double>;
+  HostSparseLUComplex();
+  ~HostSparseLUComplex();
+  HostSparseLUComplex(HostSparseLUComplex&&) noexcept;
+  HostSparseLUComplex& operator=(HostSparseLUComplex&&) noexcept;
+  HostSparseLUComplex(const HostSparseLUComplex&) = delete;
+  HostSparseLUComplex& operator=(const HostSparseLUComplex&) = delete;
+
+  void factor(std::int64_t n, const std::vector<std::int64_t>& rows, const std::vector<std::int64_t>& cols,
+              const std::vector<Complex>& values);
+  void solve(Complex* x) const;
   std::int64_t size() const { return n_; }
 
  private:

@@ -1,0 +1,264 @@
+// The assembled matrices of the linear piezoelectric solid (issue 35; seed 002 paper 1 eqs. (4)-(6)), host,
+// double. With E = -grad phi and the stress-charge law T = C S - e^T E, D = e S + eps E, the weak forms of
+// Cauchy's law (eq. (4)) and of Gauss's law (eq. (5), quasi-static) are
+//   int S(v) : (C S(u) + e^T grad phi) dV = f(v)                                  (mechanical)
+//   int grad w . (e S(u) - eps grad phi) dV = -int w sigma_f dA                   (electrical)
+// where sigma_f is the free surface charge on an electrode (D . n = -sigma_f with n the dielectric's outward
+// normal). The electrical rows are negated so the coupled matrix is symmetric (and indefinite):
+//   [ Kuu    Kuphi ] [u  ]   [ f  ]      Kuu   = int B^T C B,   Kuphi = int B^T e^T G,
+//   [ Kuphi^T -Kpp ] [phi] = [ -Q ]      Kpp   = int G^T eps G  (G: the gradients of the shape functions)
+// so that the sum of the electrical rows of an electrode's nodes is minus the charge Q on it. The consistent
+// mass M = int rho N^T N acts on u only (the electrical equation is quasi-static).
+//
+// The element matrices are evaluated directly (full tensor-product basis at the Q = p + 1 Gauss points, the
+// Jacobian formed point by point; kernels/solid/assembly.hpp does the same for the elastic matrix, whose
+// (u, u) block this reproduces). The caller numbers the unknowns: dof_u[D node + c] and dof_phi[node] give the
+// global index or -1 (a clamped component; a grounded or potential-free node). Several nodes may share one
+// potential index: an electrode is an equipotential surface with one unknown, and the sum of its nodes' rows
+// is what the shared index assembles. In 2D every integral is multiplied by the out-of-plane width.
+// O(N^(3D)) per element: for the harvester's meshes (a few thousand elements), called once per model.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fem/basis.hpp"
+#include "piezo/fe_law.hpp"
+
+namespace polymech::piezo {
+
+struct SparseTriplets {
+  std::int64_t n = 0;
+  std::vector<std::int64_t> rows, cols;
+  std::vector<double> values;
+  void add(std::int64_t r, std::int64_t c, double v) {
+    rows.push_back(r);
+    cols.push_back(c);
+    values.push_back(v);
+  }
+};
+
+// A host CSR matrix (repeated entries summed) for the products the solvers need: y = A x.
+struct HostCsr {
+  std::int64_t n = 0;
+  std::vector<std::int64_t> ptr, col;
+  std::vector<double> val;
+
+  explicit HostCsr(const SparseTriplets& t = {}) : n(t.n) {
+    std::vector<std::size_t> order(t.values.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return t.rows[a] != t.rows[b] ? t.rows[a] < t.rows[b] : t.cols[a] < t.cols[b];
+    });
+    ptr.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const std::size_t i = order[k];
+      if (k > 0 && t.rows[i] == t.rows[order[k - 1]] && t.cols[i] == t.cols[order[k - 1]]) {
+        val.back() += t.values[i];
+        continue;
+      }
+      col.push_back(t.cols[i]);
+      val.push_back(t.values[i]);
+      ++ptr[static_cast<std::size_t>(t.rows[i]) + 1];
+    }
+    for (std::size_t r = 0; r + 1 < ptr.size(); ++r) ptr[r + 1] += ptr[r];
+  }
+  // y = A x (y resized)
+  void apply(const std::vector<double>& x, std::vector<double>& y) const {
+    y.assign(static_cast<std::size_t>(n), 0.0);
+    for (std::int64_t r = 0; r < n; ++r) {
+      double s = 0.0;
+      for (std::int64_t k = ptr[static_cast<std::size_t>(r)]; k < ptr[static_cast<std::size_t>(r) + 1]; ++k)
+        s += val[static_cast<std::size_t>(k)] * x[static_cast<std::size_t>(col[static_cast<std::size_t>(k)])];
+      y[static_cast<std::size_t>(r)] = s;
+    }
+  }
+  double dot(const std::vector<double>& x, const std::vector<double>& y) const {  // x^T A y
+    std::vector<double> t;
+    apply(y, t);
+    return std::inner_product(x.begin(), x.end(), t.begin(), 0.0);
+  }
+};
+
+struct PiezoAssemblyInput {
+  int dim = 2, order = 1;
+  double width = 1.0;                        // 2D: the out-of-plane width the integrals are multiplied by
+  std::vector<std::int64_t> element_nodes;   // elements x N^D (a = i + N (j + N k))
+  std::vector<double> coordinates;           // nodes x D
+  std::vector<int> element_law;              // elements: index into laws
+  std::vector<FeLaw> laws;
+  std::vector<std::int64_t> dof_u;           // nodes x D: global index or -1
+  std::vector<std::int64_t> dof_phi;         // nodes: global index or -1
+  std::int64_t unknowns = 0;
+};
+
+struct PiezoMatrices {
+  SparseTriplets K;  // the coupled symmetric matrix above
+  SparseTriplets M;  // the consistent mass on the displacement unknowns
+  SparseTriplets Kuu;  // the elastic (u, u) block alone (for stiffness-proportional damping)
+};
+
+inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
+  const int D = in.dim, N = in.order + 1, Q = N;
+  if (D != 2 && D != 3) throw std::invalid_argument("assemble_piezo: dimension " + std::to_string(D));
+  const int ND = D == 3 ? N * N * N : N * N, QD = D == 3 ? Q * Q * Q : Q * Q, S = D == 3 ? 6 : 3;
+  const std::vector<double> nodes = fem::gauss_lobatto_nodes(N);
+  std::vector<double> xq, wq;
+  fem::gauss_legendre(Q, xq, wq);
+  std::vector<double> L(static_cast<std::size_t>(Q) * N), dL(L.size());
+  for (int q = 0; q < Q; ++q)
+    for (int i = 0; i < N; ++i) {
+      L[static_cast<std::size_t>(q) * N + i] = fem::lagrange(nodes, i, xq[q]);
+      dL[static_cast<std::size_t>(q) * N + i] = fem::lagrange_derivative(nodes, i, xq[q]);
+    }
+  const std::int64_t ne = static_cast<std::int64_t>(in.element_law.size());
+  if (static_cast<std::int64_t>(in.element_nodes.size()) != ne * ND)
+    throw std::invalid_argument("assemble_piezo: element table and law list disagree");
+  const double scale = D == 2 ? in.width : 1.0;
+  PiezoMatrices out;
+  out.K.n = out.M.n = out.Kuu.n = in.unknowns;
+  const int NL = (D + 1) * ND;  // local: u (a, c) -> a D + c, phi a -> D ND + a
+  std::vector<double> Ke(static_cast<std::size_t>(NL) * NL), Me(static_cast<std::size_t>(ND) * ND);
+  std::vector<double> grad(static_cast<std::size_t>(ND) * D), val(static_cast<std::size_t>(ND));
+  std::vector<double> B(static_cast<std::size_t>(S) * ND * D);  // B[s][(a, c)]
+  std::vector<std::int64_t> gl(static_cast<std::size_t>(NL));
+  for (std::int64_t e = 0; e < ne; ++e) {
+    const std::int64_t* en = &in.element_nodes[static_cast<std::size_t>(e) * ND];
+    const FeLaw& law = in.laws[static_cast<std::size_t>(in.element_law[static_cast<std::size_t>(e)])];
+    std::fill(Ke.begin(), Ke.end(), 0.0);
+    std::fill(Me.begin(), Me.end(), 0.0);
+    for (int q = 0; q < QD; ++q) {
+      const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
+      double w = wq[qi[0]] * wq[qi[1]];
+      if (D == 3) w *= wq[qi[2]];
+      double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+      for (int a = 0; a < ND; ++a) {
+        const int ai[3] = {a % N, (a / N) % N, a / (N * N)};
+        double v = 1.0;
+        for (int d = 0; d < D; ++d) v *= L[static_cast<std::size_t>(qi[d]) * N + ai[d]];
+        val[a] = v;
+        for (int r = 0; r < D; ++r) {
+          double g = 1.0;
+          for (int d = 0; d < D; ++d)
+            g *= d == r ? dL[static_cast<std::size_t>(qi[d]) * N + ai[d]] : L[static_cast<std::size_t>(qi[d]) * N + ai[d]];
+          grad[static_cast<std::size_t>(a) * D + r] = g;
+          for (int c = 0; c < D; ++c) J[c][r] += in.coordinates[static_cast<std::size_t>(D * en[a] + c)] * g;
+        }
+      }
+      double det, Ji[3][3];
+      if (D == 2) {
+        det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        Ji[0][0] = J[1][1] / det;
+        Ji[0][1] = -J[0][1] / det;
+        Ji[1][0] = -J[1][0] / det;
+        Ji[1][1] = J[0][0] / det;
+      } else {
+        det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+              J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            Ji[i][j] = (J[r0][c0] * J[r1][c1] - J[r0][c1] * J[r1][c0]) / det;
+          }
+      }
+      if (!(det > 0.0))
+        throw std::invalid_argument("assemble_piezo: element " + std::to_string(e) + " is inverted (det J <= 0)");
+      for (int a = 0; a < ND; ++a) {  // physical gradients, in place
+        double g[3] = {0, 0, 0};
+        for (int j = 0; j < D; ++j)
+          for (int r = 0; r < D; ++r) g[j] += grad[static_cast<std::size_t>(a) * D + r] * Ji[r][j];
+        for (int j = 0; j < D; ++j) grad[static_cast<std::size_t>(a) * D + j] = g[j];
+      }
+      // strain-displacement: B[s][(a, c)] (Voigt of the element, engineering shears)
+      std::fill(B.begin(), B.end(), 0.0);
+      auto b = [&](int s, int a, int c) -> double& { return B[(static_cast<std::size_t>(s) * ND + a) * D + c]; };
+      for (int a = 0; a < ND; ++a) {
+        const double* g = &grad[static_cast<std::size_t>(a) * D];
+        if (D == 2) {
+          b(0, a, 0) = g[0];
+          b(1, a, 1) = g[1];
+          b(2, a, 0) = g[1];
+          b(2, a, 1) = g[0];
+        } else {
+          b(0, a, 0) = g[0];
+          b(1, a, 1) = g[1];
+          b(2, a, 2) = g[2];
+          b(3, a, 1) = g[2];
+          b(3, a, 2) = g[1];
+          b(4, a, 0) = g[2];
+          b(4, a, 2) = g[0];
+          b(5, a, 0) = g[1];
+          b(5, a, 1) = g[0];
+        }
+      }
+      const double wd = w * det * scale;
+      // CB[s][(a, c)] = C B, eB[k][(a, c)] = e B
+      const int NU = ND * D;
+      std::vector<double> CB(static_cast<std::size_t>(S) * NU, 0.0), eB(static_cast<std::size_t>(D) * NU, 0.0);
+      for (int s = 0; s < S; ++s)
+        for (int t = 0; t < S; ++t) {
+          const double c = law.C[s][t];
+          if (c == 0.0) continue;
+          for (int i = 0; i < NU; ++i) CB[static_cast<std::size_t>(s) * NU + i] += c * B[static_cast<std::size_t>(t) * NU + i];
+        }
+      if (law.piezoelectric)
+        for (int k = 0; k < D; ++k)
+          for (int t = 0; t < S; ++t) {
+            const double c = law.e[k][t];
+            if (c == 0.0) continue;
+            for (int i = 0; i < NU; ++i) eB[static_cast<std::size_t>(k) * NU + i] += c * B[static_cast<std::size_t>(t) * NU + i];
+          }
+      for (int i = 0; i < NU; ++i)
+        for (int j = 0; j < NU; ++j) {
+          double s = 0.0;
+          for (int t = 0; t < S; ++t) s += B[static_cast<std::size_t>(t) * NU + i] * CB[static_cast<std::size_t>(t) * NU + j];
+          Ke[static_cast<std::size_t>(i) * NL + j] += wd * s;
+        }
+      if (law.piezoelectric) {
+        for (int i = 0; i < NU; ++i)
+          for (int a = 0; a < ND; ++a) {  // Kuphi = int B^T e^T G: (e B)_k,i G_k,a
+            double s = 0.0;
+            for (int k = 0; k < D; ++k) s += eB[static_cast<std::size_t>(k) * NU + i] * grad[static_cast<std::size_t>(a) * D + k];
+            Ke[static_cast<std::size_t>(i) * NL + NU + a] += wd * s;
+            Ke[static_cast<std::size_t>(NU + a) * NL + i] += wd * s;
+          }
+        for (int a = 0; a < ND; ++a)
+          for (int c = 0; c < ND; ++c) {
+            double s = 0.0;
+            for (int k = 0; k < D; ++k)
+              for (int l = 0; l < D; ++l)
+                s += grad[static_cast<std::size_t>(a) * D + k] * law.eps[k][l] * grad[static_cast<std::size_t>(c) * D + l];
+            Ke[static_cast<std::size_t>(NU + a) * NL + NU + c] -= wd * s;
+          }
+      }
+      for (int a = 0; a < ND; ++a)
+        for (int c = 0; c < ND; ++c) Me[static_cast<std::size_t>(a) * ND + c] += wd * law.rho * val[a] * val[c];
+    }
+    for (int a = 0; a < ND; ++a) {
+      for (int c = 0; c < D; ++c) gl[static_cast<std::size_t>(a * D + c)] = in.dof_u[static_cast<std::size_t>(D * en[a] + c)];
+      gl[static_cast<std::size_t>(ND * D + a)] = law.piezoelectric ? in.dof_phi[static_cast<std::size_t>(en[a])] : -1;
+    }
+    for (int i = 0; i < NL; ++i) {
+      if (gl[i] < 0) continue;
+      for (int j = 0; j < NL; ++j) {
+        const double v = Ke[static_cast<std::size_t>(i) * NL + j];
+        if (gl[j] < 0 || v == 0.0) continue;
+        out.K.add(gl[i], gl[j], v);
+        if (i < ND * D && j < ND * D) out.Kuu.add(gl[i], gl[j], v);
+      }
+    }
+    for (int a = 0; a < ND; ++a)
+      for (int c = 0; c < ND; ++c)
+        for (int d = 0; d < D; ++d) {
+          const std::int64_t r = gl[static_cast<std::size_t>(a * D + d)], col = gl[static_cast<std::size_t>(c * D + d)];
+          if (r >= 0 && col >= 0) out.M.add(r, col, Me[static_cast<std::size_t>(a) * ND + c]);
+        }
+  }
+  return out;
+}
+
+}  // namespace polymech::piezo
