@@ -18,6 +18,7 @@
 
 #include "piezo/analytic.hpp"
 #include "piezo/beam_model.hpp"
+#include "piezo/cases.hpp"
 #include "piezo/transient.hpp"
 
 namespace pz = polymech::piezo;
@@ -27,46 +28,14 @@ namespace {
 const pz::Pvdf kPvdf{};
 
 pz::BeamSpec pvdf_bender(int dim, pz::Plane plane, int order, int cells_length) {
-  pz::BeamSpec s;
-  s.dim = dim;
-  s.plane = plane;
-  s.order = order;
-  s.length = 0.1;
-  s.width = 5e-3;
-  s.cells_length = cells_length;
-  s.cells_width = 2;
-  s.layers = {{"lower", 5e-4, true, 1, 1}, {"upper", 5e-4, true, -1, 1}};
-  s.piezo = pz::isotropic_piezo(kPvdf.E, kPvdf.nu, kPvdf.d31, kPvdf.eps_r, 1780.0);
-  s.electrodes = {{"ground", "bottom", pz::ElectrodeKind::grounded, 0.0},
-                  {"top", "top", pz::ElectrodeKind::prescribed, 100.0}};
-  return s;
+  return pz::pvdf_bender_spec(dim, plane, order, cells_length);
 }
 
-// duToit & Wardle's harvester as in paper 1 (55 mm, PZT-5A 0.27 mm on brass 0.14 mm), width 6.4 mm (the
-// analytic case's choice), series: host grounded, the outer faces floating (beam_model.hpp's wiring).
 pz::BeamSpec dutoit(int order, int cells_length, int cells_per_piezo_layer) {
-  pz::BeamSpec s;
-  s.dim = 2;
-  s.plane = pz::Plane::stress;
-  s.order = order;
-  s.length = 55e-3;
-  s.width = 6.4e-3;
-  s.cells_length = cells_length;
-  s.layers = {{"pzt lower", 0.27e-3, true, 1, cells_per_piezo_layer},
-              {"brass", 0.14e-3, false, 1, 1},
-              {"pzt upper", 0.27e-3, true, -1, cells_per_piezo_layer}};
-  s.piezo = pz::pzt5a();
-  s.host = pz::brass();
-  s.electrodes = {{"bottom", "bottom", pz::ElectrodeKind::floating, 0.0},
-                  {"top", "top", pz::ElectrodeKind::floating, 0.0}};
-  return s;
+  return pz::dutoit_harvester_spec(order, cells_length, cells_per_piezo_layer);
 }
 
-pz::Circuit load(const pz::PiezoBeam& b, double R) {
-  pz::Circuit c(b.electrodes());
-  c.add_resistor(b.electrode("top"), b.electrode("bottom"), R);
-  return c;
-}
+pz::Circuit load(const pz::PiezoBeam& b, double R) { return pz::harvester_load(b, R); }
 
 double load_voltage(const pz::HarmonicResponse& h) { return std::abs(h.V[1] - h.V[0]); }
 
