@@ -67,49 +67,15 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt,
                                              {"free_surface", 1, std::vector<double>(s.begin(), s.end())}};
     }, [&](std::int64_t k) { return static_cast<double>(k) * c.dt; });
 
+  // the samples and the averages under way (models/isph/analysis.hpp), in every checkpoint
   const bool dam = scene.case_name == "dam_break", body = model.has_body();
-  const double a = c.fluid[0], tscale = std::sqrt(2 * c.gravity / a);
-  pm::apps::Series series({"time", "ppe_iterations", "ppe_residual", dam ? "front_Z" : "pressure_error", "max_speed", "body_y",
-                           "draft_over_diameter", "draft_over_diameter_surface_particles", "body_force_y"});
-  std::vector<double> psum, fronts_T;   // the pressure sum over the averaging window; T of each front sample
-  int pcount = 0, draft_count = 0;
-  double draft_sum = 0, draft_s_sum = 0, lowest_gap = 1e300;  // lowest: the body's gap to the bottom over the samples
+  ip::CaseRecord<ip::Isph<T, D>> rec(model, dam, steps, scene.average_last, scene.draft_average_last, scene.end_time);
+  pm::apps::Series series(rec.columns(dam));
   cs.records.keep("isph/series", series);
-  cs.records.keep("isph/fronts_T", fronts_T);
-  cs.records.keep("isph/psum", psum);
-  cs.records.keep("isph/pcount", pcount);
-  cs.records.keep("isph/draft_count", draft_count);
-  cs.records.keep("isph/draft_sum", draft_sum);
-  cs.records.keep("isph/draft_surface_sum", draft_s_sum);
-  cs.records.keep("isph/lowest_gap", lowest_gap);
-
-  const std::int64_t average_from = steps - static_cast<std::int64_t>(std::llround(scene.average_last / c.dt));
-  cs.after_step = [&](std::int64_t k) {
-    if (dam || k <= average_from || !(scene.average_last > 0)) return;
-    const auto p = model.host_pressure();
-    if (psum.empty()) psum.assign(p.size(), 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) psum[i] += p[i];
-    ++pcount;
-  };
+  rec.keep([&](const std::string& key, auto& value) { cs.records.keep(key, value); });
+  cs.after_step = [&](std::int64_t k) { rec.after_step(k); };
   cs.hooks.sample_every = scene.sample_every > 0 ? std::max<std::int64_t>(1, std::llround(scene.sample_every / c.dt)) : 1;
-  cs.hooks.sample = [&](std::int64_t k) {
-    const double t = static_cast<double>(k) * c.dt;
-    const double q = dam ? ip::front_position(model) / a : ip::pressure_error(model, model.host_pressure());
-    if (dam) fronts_T.push_back(t * tscale);
-    ip::Draft d;
-    if (body) {
-      lowest_gap = std::min(lowest_gap, model.body().centre[1] - 0.5 * c.body.diameter);
-      d = ip::draft(model);
-      if (scene.draft_average_last > 0 && t >= scene.end_time - scene.draft_average_last) {
-        draft_sum += d.volume / c.body.diameter;
-        draft_s_sum += d.surface / c.body.diameter;
-        ++draft_count;
-      }
-    }
-    series.append({t, double(model.last_solve().iterations), model.last_solve().residual, q, ip::max_speed(model),
-                   body ? model.body().centre[1] : 0.0, body ? d.volume / c.body.diameter : 0.0, body ? d.surface / c.body.diameter : 0.0,
-                   body ? model.body().force[1] : 0.0});
-  };
+  cs.hooks.sample = [&](std::int64_t k) { series.append(rec.sample(static_cast<double>(k) * c.dt)); };
   cs.hooks.watchdog.keep_last_good = true;
   const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
 
@@ -130,24 +96,20 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt,
   if (stats.diverged) j["reason"] = stats.reason;
   if (dam) {
     j["front_positions"] = nlohmann::json::array();
-    for (std::size_t k = 0; k < fronts_T.size(); ++k) j["front_positions"].push_back({fronts_T[k], series["front_Z"][k]});
+    for (std::size_t k = 0; k < rec.fronts_T.size(); ++k) j["front_positions"].push_back({rec.fronts_T[k], series["front_Z"][k]});
   } else {
-    std::vector<double> p = model.host_pressure();
-    for (std::size_t i = 0; i < p.size() && pcount > 0; ++i) p[i] = psum[i] / pcount;
-    j["hydrostatic_pressure_error"] = ip::pressure_error(model, p);
+    j["hydrostatic_pressure_error"] = ip::pressure_error(model, rec.averaged_pressure());
     j["hydrostatic_pressure_error_instantaneous"] = ip::pressure_error(model, model.host_pressure());
-    j["pressure_averaged_over_seconds"] = pcount * c.dt;
+    j["pressure_averaged_over_seconds"] = rec.pcount * c.dt;
   }
   if (body) {
     put_body(j, model, c);
-    j["body_lowest_gap_to_bottom"] = lowest_gap;
-    const auto& dv = series["draft_over_diameter"];
-    const auto& ds = series["draft_over_diameter_surface_particles"];
-    j["draft_over_diameter"] = draft_count > 0 ? draft_sum / draft_count : (dv.empty() ? 0.0 : dv.back());
-    j["draft_over_diameter_surface_particles"] = draft_count > 0 ? draft_s_sum / draft_count : (ds.empty() ? 0.0 : ds.back());
-    j["draft_averaged_over_samples"] = draft_count;
+    j["body_lowest_gap_to_bottom"] = rec.lowest_gap;
+    j["draft_over_diameter"] = rec.draft_mean(rec.draft_sum, series["draft_over_diameter"]);
+    j["draft_over_diameter_surface_particles"] = rec.draft_mean(rec.draft_s_sum, series["draft_over_diameter_surface_particles"]);
+    j["draft_averaged_over_samples"] = rec.draft_count;
   }
-  std::vector<std::string> csv(series.names().begin(), series.names().begin() + (body ? 9 : 5));
+  std::vector<std::string> csv(series.names().begin(), series.names().begin() + rec.written_columns());
   series.write_csv(cs.out() / "series.csv", csv);
   const auto& history = model.last_solve().history;
   std::vector<double> iteration(history.size());
