@@ -15,38 +15,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "apps/common/case.hpp"
 #include "dem/analysis.hpp"
 #include "io/dem_pour_scene.hpp"
+#include "io/lammps_data.hpp"
 
 namespace pm = polymech;
 namespace dm = polymech::dem;
 
 namespace {
 
-void write_lammps_data(const std::filesystem::path& file, const dm::Config& c, const dm::PourSpec& p) {
-  if (!c.clumps.empty()) throw std::invalid_argument("--lammps-data: the scene has clumps; the peer run takes spheres only");
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-  out.precision(17);
-  out << "polymech dem_pour initial particles (atom_style sphere: id type diameter density x y z)\n\n"
-      << c.spheres.size() << " atoms\n1 atom types\n\n0 " << p.bin[0] << " xlo xhi\n0 " << p.bin[1] << " ylo yhi\n0 "
-      << std::max(p.bin[2], dm::pour_top(p) + 2 * p.radius_max) << " zlo zhi\n\nAtoms\n\n";
-  for (std::size_t i = 0; i < c.spheres.size(); ++i) {
-    const auto& s = c.spheres[i];
-    out << i + 1 << " 1 " << 2 * s.radius << " " << c.particle.density << " " << s.position[0] << " " << s.position[1] << " "
-        << s.position[2] << "\n";
-  }
-}
-
 int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
              const std::string& lammps_data) {
   const dm::Config& c = scene.config;
   const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
   pm::apps::Case cs({"dem_pour", scene.header, steps, c.dt}, opt, ropt);
-  if (!lammps_data.empty()) write_lammps_data(lammps_data, c, scene.pour);
+  if (!lammps_data.empty()) pm::io::write_lammps_data(lammps_data, c, scene.pour);
   dm::Dem<double> model(c);
   const auto spheres = model.sphere_count();
   std::fprintf(stderr,
@@ -58,27 +43,14 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                pm::apps::thread_count().c_str());
 
   // snapshots: displacement from the start, velocity, radius and the clump each sphere belongs to
-  std::vector<double> points, radius, clump(static_cast<std::size_t>(spheres), -1.0);
-  for (const auto& row : dm::sphere_rows(model)) {
-    points.insert(points.end(), row.begin(), row.begin() + 3);
-    radius.push_back(row[3]);
-  }
-  for (std::size_t i = c.spheres.size(), b = 0, k = 0; i < clump.size(); ++i) {  // members, clump after clump
-    clump[i] = double(b);
-    if (++k == c.clump_shapes[static_cast<std::size_t>(c.clumps[b].shape)].spheres.size()) {
-      k = 0;
-      ++b;
-    }
-  }
-  cs.snapshots(pm::apps::point_mesh(3, std::move(points)))
+  auto layout = dm::sphere_layout(model, c);
+  cs.snapshots(pm::apps::point_mesh(3, std::move(layout.points)))
       .every(scene.snapshots > 0 ? std::max<std::int64_t>(1, steps / scene.snapshots) : 0, [&](std::int64_t) {
-        const auto& s = model.spheres();
-        auto u = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.u);
-        auto v = Kokkos::create_mirror_view_and_copy(pm::HostSpace(), s.v);
-        std::vector<double> hu(u.data(), u.data() + u.size()), hv(v.data(), v.data() + v.size());
-        return pm::apps::CaseSnapshots::Fields{{"displacement", 3, hu}, {"velocity", 3, hv}, {"radius", 1, radius}, {"clump", 1, clump}};
+        auto m = dm::sphere_motion(model);
+        return pm::apps::CaseSnapshots::Fields{{"displacement", 3, std::move(m.u)}, {"velocity", 3, std::move(m.v)},
+                                               {"radius", 1, layout.radius}, {"clump", 1, layout.clump}};
       }, [&](std::int64_t) { return model.time(); });
-  pm::apps::Series series({"time", "kinetic_energy", "mean_height", "top_height"}), wheel_series(dm::wheel_columns());
+  pm::apps::Series series(dm::pour_columns()), wheel_series(dm::wheel_columns());
   const bool wheel = c.wheel.enabled();
   cs.records.keep("dem_pour/series", series);
   if (wheel) cs.records.keep("dem_pour/wheel", wheel_series);
@@ -86,8 +58,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   cs.hooks.sample_at_start = true;
   cs.hooks.sample = [&](std::int64_t) {
     if (wheel && model.wheel().placed) wheel_series.append(dm::wheel_row(model.time(), model.wheel()));
-    const auto s = dm::pour_sample(dm::sphere_rows(model));
-    series.append({model.time(), model.kinetic_energy(), s.mean_height, s.top_height});
+    series.append(dm::pour_row(model));
   };
   // the heap: the wall x = lx opens at release_at (moved far behind the spheres; planes are state, so a
   // restart after the release keeps it open)
@@ -99,31 +70,25 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
 
   const auto rows = dm::sphere_rows(model);
-  std::array<double, 3> lo{}, hi{};
-  dm::bed_box(rows, scene.pour, lo, hi);
-  const bool bed = hi[2] > lo[2];  // a bed thicker than 2 radius_max (not at draft accuracy on a wide bin)
-  const double phi = bed ? dm::packing_fraction(rows, lo, hi, 80) : NAN;
+  const auto bed = dm::settled_bed(rows, scene.pour);  // none thinner than 2 radius_max (draft accuracy on a wide bin)
+  const auto &lo = bed.lo, &hi = bed.hi;
   series.write_csv(cs.out() / "energy.csv");
   std::vector<std::string> files = {"summary.json", "energy.csv", "fields.h5", cs.snapshots().finish().filename().string()};
 
   nlohmann::json j = cs.summary();
   if (scene.pour.release_at > 0) {  // a heap: its angle, not a bed
-    std::vector<std::array<double, 2>> profile;
-    const double angle = dm::repose_angle(rows, scene.pour, &profile);
-    pm::apps::Series heap({"x", "surface_height"});
-    for (const auto& p : profile) heap.append({p[0], p[1]});
-    heap.write_csv(cs.out() / "heap_profile.csv");
+    const auto heap = dm::heap(rows, scene.pour);
+    pm::io::write_csv(cs.out() / "heap_profile.csv", {"x", "surface_height"}, heap.profile);
     files.push_back("heap_profile.csv");
-    j["repose_angle_deg"] = std::isfinite(angle) ? nlohmann::json(angle) : nlohmann::json(nullptr);
+    j["repose_angle_deg"] = std::isfinite(heap.angle) ? nlohmann::json(heap.angle) : nlohmann::json(nullptr);
     j["release_at"] = scene.pour.release_at;
-    std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, angle);
+    std::printf("heap released at %.3g s: angle of repose %.2f degrees (heap_profile.csv)\n", scene.pour.release_at, heap.angle);
   }
   if (wheel) {  // seed 002 paper 2, Figs. 7-10
     wheel_series.write_csv(cs.out() / "wheel.csv");
     const auto w = model.wheel();
     const auto means = dm::steady_means(wheel_series.all(), c.wheel.speed_to);
-    pm::io::write_csv(cs.out() / "track_profile.csv", {"y", "surface_height"},
-                      dm::track_profile(rows, scene.pour, c.wheel.x_start, std::max(c.wheel.x_start + 2 * scene.pour.radius_max, w.centre[0])));
+    pm::io::write_csv(cs.out() / "track_profile.csv", {"y", "surface_height"}, dm::track_profile(rows, scene.pour, c.wheel, w));
     auto mean = [&](double x) { return means.samples > 0 ? nlohmann::json(x) : nlohmann::json(nullptr); };
     j["sinkage_mm"] = mean(means.sinkage);
     j["vertical_force"] = mean(means.vertical);
@@ -140,8 +105,8 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                 "tyre: 53.6), vertical force %.4g N (load %.4g), tractive force %.4g N, driving torque %.4g N m (wheel.csv)\n",
                 w.time, w.centre[0] - c.wheel.x_start, means.from, means.sinkage, means.vertical, c.wheel.load, means.tractive, means.torque);
   }
-  j["packing_fraction"] = bed ? nlohmann::json(phi) : nlohmann::json(nullptr);
-  if (!bed) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
+  j["packing_fraction"] = bed.measured ? nlohmann::json(bed.packing_fraction) : nlohmann::json(nullptr);
+  if (!bed.measured) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
   j["bed_box"] = {{"lo", lo}, {"hi", hi}};
   j["bed_height"] = hi[2] + scene.pour.radius_max;
   j["particles"] = scene.pour.count;
@@ -160,7 +125,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   const int rc = cs.finish(j, stats, files);
   std::printf("%d particles (%lld spheres) poured in %.3f s simulated: packing fraction %.4f in [%.3g, %.3g] x [%.3g, %.3g] x "
               "[%.3g, %.3g] m, kinetic energy %.3g J; wall %.1f s (%.3g sphere-steps/s)\n",
-              scene.pour.count, static_cast<long long>(spheres), model.time(), phi, lo[0], hi[0], lo[1], hi[1], lo[2], hi[2],
+              scene.pour.count, static_cast<long long>(spheres), model.time(), bed.packing_fraction, lo[0], hi[0], lo[1], hi[1], lo[2], hi[2],
               model.kinetic_energy(), stats.wall_seconds, rate);
   std::printf("results in %s: summary.json, energy.csv, %s (open in ParaView)\n", cs.out().c_str(), files[3].c_str());
   return rc;

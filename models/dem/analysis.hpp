@@ -1,10 +1,14 @@
 // What the DEM pour and wheel cases measure (seed 002 paper 2, Figs. 6-10; docs/VALIDATION.md), used
 // alike by apps/dem_pour, the tests and the sweeps. The packing fraction, the bed's box and the heap's
-// angle of repose are in pour.hpp (Kokkos-free, compiled once).
+// angle of repose are in pour.hpp (Kokkos-free, compiled once); here, what is read off the model's
+// spheres: their rows, the snapshots' fields, the bed's box and packing fraction, the wheel's means and
+// the track's profile.
 #pragma once
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "dem/dem.hpp"
@@ -23,6 +27,57 @@ std::vector<std::array<double, 4>> sphere_rows(const Dem<T>& m) {
   for (std::size_t i = 0; i < rows.size(); ++i)
     rows[i] = {double(x0(i, 0) + u(i, 0)), double(x0(i, 1) + u(i, 1)), double(x0(i, 2) + u(i, 2)), double(r(i))};
   return rows;
+}
+
+// What the snapshots of a pour show beside the motion: every sphere's position (at the start: the mesh),
+// radius, and the clump it belongs to (-1: a free sphere; the members follow the free spheres, clump
+// after clump).
+struct SphereLayout {
+  std::vector<double> points, radius, clump;
+};
+template <class T>
+SphereLayout sphere_layout(const Dem<T>& m, const Config& c) {
+  SphereLayout l;
+  l.clump.assign(static_cast<std::size_t>(m.sphere_count()), -1.0);
+  for (const auto& row : sphere_rows(m)) {
+    l.points.insert(l.points.end(), row.begin(), row.begin() + 3);
+    l.radius.push_back(row[3]);
+  }
+  for (std::size_t i = c.spheres.size(), b = 0, k = 0; i < l.clump.size(); ++i) {
+    l.clump[i] = double(b);
+    if (++k == c.clump_shapes[static_cast<std::size_t>(c.clumps[b].shape)].spheres.size()) {
+      k = 0;
+      ++b;
+    }
+  }
+  return l;
+}
+
+// Every sphere's displacement from the start and velocity (3 per sphere), copied to the host.
+struct SphereMotion {
+  std::vector<double> u, v;
+};
+template <class T>
+SphereMotion sphere_motion(const Dem<T>& m) {
+  const auto& s = m.spheres();
+  auto u = Kokkos::create_mirror_view_and_copy(HostSpace(), s.u);
+  auto v = Kokkos::create_mirror_view_and_copy(HostSpace(), s.v);
+  return {std::vector<double>(u.data(), u.data() + u.size()), std::vector<double>(v.data(), v.data() + v.size())};
+}
+
+// The settled bed (bed_box, packing_fraction of pour.hpp): its measuring box and the packing fraction on
+// an 80^3 grid; no bed (NaN) when the box is empty: a bed thinner than 2 radius_max.
+struct Bed {
+  std::array<double, 3> lo{}, hi{};
+  bool measured = false;
+  double packing_fraction = 0.0;
+};
+inline Bed settled_bed(const std::vector<std::array<double, 4>>& rows, const PourSpec& p) {
+  Bed b;
+  bed_box(rows, p, b.lo, b.hi);
+  b.measured = b.hi[2] > b.lo[2];
+  b.packing_fraction = b.measured ? packing_fraction(rows, b.lo, b.hi, 80) : NAN;
+  return b;
 }
 
 // The columns of a wheel's history (wheel.csv; Figs. 8-10).
@@ -84,6 +139,11 @@ inline std::vector<std::vector<double>> track_profile(const std::vector<std::arr
   }
   return cols;
 }
+// ... over the x range the wheel `w` (configuration `wc`) has run over (at least 2 radius_max).
+inline std::vector<std::vector<double>> track_profile(const std::vector<std::array<double, 4>>& rows, const PourSpec& p,
+                                                      const WheelSpec& wc, const WheelState& w) {
+  return track_profile(rows, p, wc.x_start, std::max(wc.x_start + 2 * p.radius_max, w.centre[0]));
+}
 
 // The bed's mean and top height (the sphere tops) and its kinetic energy: a sample of the pour.
 struct PourSample {
@@ -97,6 +157,35 @@ inline PourSample pour_sample(const std::vector<std::array<double, 4>>& rows) {
   }
   s.mean_height /= double(rows.size());
   return s;
+}
+
+// The pour's history (energy.csv): time, kinetic energy, the bed's mean and top height.
+inline const std::vector<std::string>& pour_columns() {
+  static const std::vector<std::string> c = {"time", "kinetic_energy", "mean_height", "top_height"};
+  return c;
+}
+template <class T>
+std::vector<double> pour_row(const Dem<T>& m) {
+  const auto s = pour_sample(sphere_rows(m));
+  return {m.time(), m.kinetic_energy(), s.mean_height, s.top_height};
+}
+
+// A released heap (PourSpec::release_at): its angle of repose (repose_angle, pour.hpp; NaN: no slope)
+// and its surface profile, columns x, surface height.
+struct Heap {
+  double angle = 0.0;
+  std::vector<std::vector<double>> profile;
+};
+inline Heap heap(const std::vector<std::array<double, 4>>& rows, const PourSpec& p) {
+  std::vector<std::array<double, 2>> profile;
+  Heap h;
+  h.angle = repose_angle(rows, p, &profile);
+  h.profile.resize(2);
+  for (const auto& r : profile) {
+    h.profile[0].push_back(r[0]);
+    h.profile[1].push_back(r[1]);
+  }
+  return h;
 }
 
 }  // namespace polymech::dem
