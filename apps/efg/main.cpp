@@ -10,12 +10,10 @@
 // the displacement at the nodes. Dynamic: summary.json (sif_stationary or sif_running, crack_opening,
 // sif_peak, energy_error, run record) and sif_history.csv; checkpoints and --restart as in
 // apps/common/restart.hpp.
-#include <algorithm>
-#include <cstdint>
+#include <array>
 #include <chrono>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -26,6 +24,13 @@
 namespace pm = polymech;
 
 namespace {
+
+// [[x, y], ...] (built by hand: GCC 12 sees a null dereference in nlohmann's conversion of std::array)
+nlohmann::json pairs(const std::vector<std::array<double, 2>>& v) {
+  auto a = nlohmann::json::array();
+  for (const auto& p : v) a.push_back({p[0], p[1]});
+  return a;
+}
 
 // The stationary or running crack under a Heaviside step (seed 004 §3.2, §3.3) through the case runner
 // (apps/common/case.hpp: checkpoints, --restart, watchdog): Newmark steps, J' on every path and the crack
@@ -41,13 +46,7 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
   model.assemble();
   model.start_dynamic(scene.dt);
   model.set_prescribed_growth(true);
-  std::vector<std::string> columns = {"t_us", "K_factor_mean", "crack_opening_m", "energy_balance_J", "load_work", "j_spread"};
-  for (double r : c.j_radii) {
-    char name[64];
-    std::snprintf(name, sizeof name, "K_factor_r%.3gmm", r * 1e3);
-    columns.push_back(name);
-  }
-  pm::apps::Series series(columns);
+  pm::apps::Series series(pm::efg::history_columns(c.j_radii));  // models/efg/analysis.hpp
   double j_seconds = 0.0;
   cs.records.keep("efg/series", series);
   cs.records.keep("efg/j_seconds", j_seconds);
@@ -58,29 +57,14 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
     const auto s = pm::efg::dynamic_sample(model, scene.domain_cells);
     j_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tj).count();
     const double t_us = model.time() * 1e6;
-    std::vector<double> row = {t_us, s.mean, s.opening, s.energy_balance, model.load_work(), s.spread};
-    row.insert(row.end(), s.factor.begin(), s.factor.end());
-    series.append(row);
+    series.append(pm::efg::history_row(t_us, s, model.load_work()));
     if (!opt.quiet)
       std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, 1e3 * model.crack_length(),
                   s.mean, 100 * s.spread, s.opening);
   };
   const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
 
-  nlohmann::json sif = nlohmann::json::array(), opening = nlohmann::json::array();
-  double worst_energy = 0.0, max_work = 0.0, peak = -1.0, peak_spread = 0.0, peak_t = 0.0;
-  for (std::size_t i = 0; i < series.rows(); ++i) {
-    const double t_us = series["t_us"][i], f = series["K_factor_mean"][i];
-    sif.push_back({t_us, f});
-    opening.push_back({t_us, series["crack_opening_m"][i]});
-    worst_energy = std::max(worst_energy, std::abs(series["energy_balance_J"][i]));
-    max_work = std::max(max_work, std::abs(series["load_work"][i]));
-    if (f > peak) {
-      peak = f;
-      peak_t = t_us;
-      peak_spread = series["j_spread"][i];
-    }
-  }
+  const auto h = pm::efg::dynamic_history(series.all());
   const auto& t = model.timings();
   j["mode"] = "dynamic";
   j["nodes"] = model.nodes() - model.split_nodes();  // the layout's (a split path node counts once)
@@ -92,17 +76,15 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
     j["growth_start_us"] = c.growth_start * 1e6;
     j["final_crack_length"] = c.final_crack_length;
   }
-  j["state"] = c.plane_strain ? "plane_strain" : "plane_stress";
   j["dt"] = scene.dt;
   j["steps"] = stats.steps;
-  j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = sif;
-  j["crack_opening"] = opening;
-  j["sif_peak"] = peak;
-  j["sif_peak_time_us"] = peak_t;
-  j["j_path_spread"] = peak_spread;
+  j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = pairs(h.sif);
+  j["crack_opening"] = pairs(h.opening);
+  j["sif_peak"] = h.peak;
+  j["sif_peak_time_us"] = h.peak_time_us;
+  j["j_path_spread"] = h.peak_spread;
   j["j_radii"] = c.j_radii;
-  j["j_band"] = c.j_band;  // J' on each path: the mean over r +- j_band h(r) / 2 (0: single circles)
-  j["energy_error"] = max_work > 0 ? worst_energy / max_work : 0.0;
+  j["energy_error"] = h.energy_error;
   // timings of this process (a resumed run: since its restart)
   j["assembly_seconds"] = t.assembly_seconds;
   j["shape_seconds"] = t.shape_seconds;
@@ -111,13 +93,11 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
   j["step_seconds_per_step"] = done > 0 ? t.step_seconds / static_cast<double>(done) : 0.0;
   j["j_seconds"] = j_seconds;
   j["wall_seconds"] = stats.wall_seconds;
-  std::vector<std::string> csv = {"t_us", "K_factor_mean", "crack_opening_m", "energy_balance_J"};
-  csv.insert(csv.end(), columns.begin() + 6, columns.end());
-  series.write_csv(cs.out() / "sif_history.csv", csv);
+  series.write_csv(cs.out() / "sif_history.csv", pm::efg::history_csv_columns(series.names()));
   const int rc = cs.finish(j, stats, {"summary.json", "sif_history.csv"});
   std::printf("efg: %d nodes (%d path nodes split), %lld steps, peak K/(s sqrt(pi a)) = %.4f at %.2f us (J' path spread %.2f %%), energy error %.2e, %.2f s; results in %s\n",
-              model.nodes() - model.split_nodes(), model.split_nodes(), static_cast<long long>(stats.steps), peak, peak_t, 100 * peak_spread,
-              max_work > 0 ? worst_energy / max_work : 0.0, stats.wall_seconds, cs.out().c_str());
+              model.nodes() - model.split_nodes(), model.split_nodes(), static_cast<long long>(stats.steps), h.peak, h.peak_time_us, 100 * h.peak_spread,
+              h.energy_error, stats.wall_seconds, cs.out().c_str());
   return rc;
 }
 
@@ -129,19 +109,17 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
   pm::efg::Efg<T> model(scene.config);
   const auto& c = scene.config;
   nlohmann::json j = pm::apps::summary_header("efg", scene.header);
+  j["state"] = c.plane_strain ? "plane_strain" : "plane_stress";
+  j["j_band"] = c.j_band;  // J' on each path: the mean over r +- j_band h(r) / 2 (0: single circles)
   if (scene.dynamic) return run_dynamic(scene, model, opt, ropt, j);
   pm::apps::CaseSpec spec("efg", scene.header, 0);
   spec.checkpoints = false;  // one solve
   pm::apps::Case cs(spec, opt, ropt);
   model.solve_static();
   const auto sif = pm::efg::static_sif(model, scene.handbook);
-  nlohmann::json paths = nlohmann::json::array();
-  for (std::size_t p = 0; p < sif.radii.size(); ++p) {
-    paths.push_back({sif.radii[p], sif.factor[p]});
-    if (!opt.quiet)
-      std::printf("r = %.4g m: J = %.6g N/m, K_I = %.6g Pa m^0.5, K/(s sqrt(pi a)) = %.5f (handbook %.5f, %+.2f %%)\n", sif.radii[p], sif.j[p],
-                  sif.k[p], sif.factor[p], scene.handbook, 100 * sif.error[p]);
-  }
+  for (std::size_t p = 0; p < sif.radii.size() && !opt.quiet; ++p)
+    std::printf("r = %.4g m: J = %.6g N/m, K_I = %.6g Pa m^0.5, K/(s sqrt(pi a)) = %.5f (handbook %.5f, %+.2f %%)\n", sif.radii[p], sif.j[p],
+                sif.k[p], sif.factor[p], scene.handbook, 100 * sif.error[p]);
   const auto nodal = pm::efg::nodal_fields(model);
   cs.snapshots(pm::apps::point_mesh(2, model.layout().nodes), "fields", true)
       .add(0, 0.0, pm::io::Fields{{"displacement", 2, nodal.displacement}, {"stress", 3, nodal.stress}});
@@ -152,14 +130,12 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
   j["gauss_points"] = model.layout().quad_count();
   j["crack"] = c.crack == pm::efg::CrackKind::edge ? "edge" : "centre";
   j["a_over_w"] = c.crack == pm::efg::CrackKind::edge ? c.crack_length / c.width : c.crack_length / (0.5 * c.width);
-  j["state"] = c.plane_strain ? "plane_strain" : "plane_stress";
   j["handbook_factor"] = scene.handbook;
-  j["sif_static"] = paths;
+  j["sif_static"] = pairs(sif.paths());
   j["sif_mean"] = sif.mean;
   j["sif_error"] = sif.mean / scene.handbook - 1;
   j["sif_max_abs_error"] = sif.max_abs_error();
   j["j_path_spread"] = sif.spread;
-  j["j_band"] = c.j_band;
   j["crack_opening"] = model.opening_at(0.0);  // at the crack's centre (centre crack) or mouth (edge crack)
   j["shape_seconds"] = t.shape_seconds;
   j["assembly_seconds"] = t.assembly_seconds;

@@ -2,13 +2,17 @@
 // apps/efg, the tests and the sweeps:
 //   - static: K_I / (sigma sqrt(pi a)) from the J-integral on every path, against the handbook value;
 //   - dynamic: a sample of the stationary or running crack (J' on every path, the crack opening, the
-//     energy balance of the average-acceleration rule);
+//     energy balance of the average-acceleration rule), its row of the run's history and what the
+//     summary reads off the history (the K factor's peak, the energy error);
 //   - the displacement and stress at the nodes (MLS values: the nodal coefficients are not the
 //     displacements).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "efg/efg.hpp"
@@ -22,6 +26,12 @@ struct StaticSif {
   double spread = 0.0;                             // (J_max - J_min) / J_max over the paths
   double max_abs_error() const {
     return std::abs(*std::max_element(error.begin(), error.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
+  }
+  // [radius, factor] per path
+  std::vector<std::array<double, 2>> paths() const {
+    std::vector<std::array<double, 2>> p;
+    for (std::size_t i = 0; i < radii.size(); ++i) p.push_back({radii[i], factor[i]});
+    return p;
   }
 };
 template <class Model>
@@ -68,6 +78,55 @@ DynamicSample dynamic_sample(Model& model, int domain_cells) {
   s.spread = hi > 0 ? (hi - lo) / hi : 0.0;
   s.energy_balance = model.kinetic_energy() + model.strain_energy() - model.load_work();
   return s;
+}
+
+// A dynamic run's history, one row per sample: time [us], the mean factor, the crack opening, the energy
+// balance, the load's work, the J' spread, then the factor on each path of `radii` ("K_factor_r<r>mm").
+// sif_history.csv holds the first four and the paths' (history_csv_columns).
+inline std::vector<std::string> history_columns(const std::vector<double>& radii) {
+  std::vector<std::string> columns = {"t_us", "K_factor_mean", "crack_opening_m", "energy_balance_J", "load_work", "j_spread"};
+  for (double r : radii) {
+    char name[64];
+    std::snprintf(name, sizeof name, "K_factor_r%.3gmm", r * 1e3);
+    columns.push_back(name);
+  }
+  return columns;
+}
+inline std::vector<std::string> history_csv_columns(const std::vector<std::string>& columns) {
+  std::vector<std::string> csv = {"t_us", "K_factor_mean", "crack_opening_m", "energy_balance_J"};
+  csv.insert(csv.end(), columns.begin() + 6, columns.end());
+  return csv;
+}
+inline std::vector<double> history_row(double t_us, const DynamicSample& s, double load_work) {
+  std::vector<double> row = {t_us, s.mean, s.opening, s.energy_balance, load_work, s.spread};
+  row.insert(row.end(), s.factor.begin(), s.factor.end());
+  return row;
+}
+
+// What the summary reads off the history (columns as history_columns): the mean factor and the crack
+// opening over time [t_us, value], the factor's peak (its time, its J' spread), and the energy error:
+// the largest |energy balance| over the largest |load work| (0 without work).
+struct DynamicHistory {
+  std::vector<std::array<double, 2>> sif, opening;
+  double peak = -1.0, peak_time_us = 0.0, peak_spread = 0.0, energy_error = 0.0;
+};
+inline DynamicHistory dynamic_history(const std::vector<std::vector<double>>& h) {
+  DynamicHistory d;
+  double worst_energy = 0.0, max_work = 0.0;
+  for (std::size_t i = 0; i < h[0].size(); ++i) {
+    const double t_us = h[0][i], f = h[1][i];
+    d.sif.push_back({t_us, f});
+    d.opening.push_back({t_us, h[2][i]});
+    worst_energy = std::max(worst_energy, std::abs(h[3][i]));
+    max_work = std::max(max_work, std::abs(h[4][i]));
+    if (f > d.peak) {
+      d.peak = f;
+      d.peak_time_us = t_us;
+      d.peak_spread = h[5][i];
+    }
+  }
+  d.energy_error = max_work > 0 ? worst_energy / max_work : 0.0;
+  return d;
 }
 
 // The displacement (2 per node) and stress (sigma_xx, sigma_yy, sigma_xy per node, Hooke's law of the
