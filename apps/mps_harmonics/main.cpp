@@ -7,44 +7,34 @@
 // Writes time_history.csv, spectrum.csv, contact_states.csv, summary.json, fields.h5/.xdmf (cracked run).
 // Checkpoints and --restart as in apps/common/restart.hpp: a restart continues inside whichever of the
 // two runs was going (the cracked run's checkpoints carry the intact run's record).
-#include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
 
-#include "analysis/spectrum.hpp"
 #include "apps/common/case.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/progress.hpp"
-#include "mps_elastic/harmonics.hpp"
+#include "mps_elastic/analysis.hpp"
 
 namespace pm = polymech;
 namespace me = polymech::mps_elastic;
 
 namespace {
 
-// Before the run (also for --dry-run): the record must hold the harmonics probe's analysis window, or the
-// run's time is spent for nothing (issue 33 item 3); probes whose own window does not fit are named.
-void check_record_length(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
+// Before the run (also for --dry-run): the scene must be a crack scene with a harmonics probe whose
+// analysis window the record holds, or the run's time is spent for nothing (issue 33 item 3); probes
+// whose own window does not fit are named (models/mps_elastic/analysis.hpp).
+void check_scene(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
   const me::Config& c = scene.config;
-  const auto need = [&](const std::string& probe) { return me::steps_for_harmonic_window(c, probe); };
-  const auto describe = [&](const std::string& probe) {
-    const double arrival = me::burst_arrival(c, me::probe_named(c, probe));
-    char b[256];
-    std::snprintf(b, sizeof b, "the %s burst reaches probe %s at %.3g s and its analysis window ends 3.75 periods later",
-                  c.excitation.kind == me::ExcitationKind::plane_s ? "S" : "P", probe.c_str(), arrival);
-    return std::string(b);
-  };
-  const std::string steps_from = opt.steps > 0 ? "--steps" : "[time].steps at this accuracy";
-  const std::int64_t n = need(scene.harmonics_probe);
-  if (c.steps < n)
-    throw pm::io::SceneError(opt.scene.string() + ": " + steps_from + " = " + std::to_string(c.steps) + " records " +
-                             pm::models::format_g(static_cast<double>(c.steps) * c.dt) + " s, but " +
-                             describe(scene.harmonics_probe) + ": needs at least " + std::to_string(n) +
-                             " steps (--steps " + std::to_string(n) + ")");
+  if (c.crack.mode == me::CrackMode::none) throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs a [crack] table");
+  if (scene.harmonics_probe.empty())
+    throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
+  const auto why = me::record_shortfall(c, scene.harmonics_probe, opt.steps > 0 ? "--steps" : "[time].steps at this accuracy");
+  if (!why.empty()) throw pm::io::SceneError(opt.scene.string() + ": " + why);
   for (const auto& p : c.probes)
-    if (p.name != scene.harmonics_probe && c.steps < need(p.name) && !opt.quiet)
+    if (p.name != scene.harmonics_probe && c.steps < me::steps_for_harmonic_window(c, p.name) && !opt.quiet)
       std::fprintf(stderr, "mps_harmonics: note: %s: the ratios at probe %s are left out (%lld steps needed)\n",
-                   describe(p.name).c_str(), p.name.c_str(), static_cast<long long>(need(p.name)));
+                   me::window_description(c, p.name).c_str(), p.name.c_str(), static_cast<long long>(me::steps_for_harmonic_window(c, p.name)));
 }
 
 template <class T>
@@ -56,45 +46,31 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   pm::apps::Case cs(spec, opt, ropt);
   const std::string phase = me::harmonics_phase(cs.resume());
 
-  pm::io::SnapshotMesh mesh;
-  {
-    // reference positions of the lattice, for the snapshots of the cracked run
-    const me::Lattice lat = me::make_lattice(c);
-    mesh.points.resize(2 * static_cast<std::size_t>(lat.count()));
-    for (pm::Index i = 0; i < lat.count(); ++i) {
-      mesh.points[2 * static_cast<std::size_t>(i)] = lat.x1(i);
-      mesh.points[2 * static_cast<std::size_t>(i) + 1] = lat.x3(i);
-    }
-  }
-  auto& snapshots = cs.snapshots(std::move(mesh)).writer();
+  auto& snapshots = cs.snapshots(pm::apps::point_mesh(2, me::lattice_points(c))).writer();  // the lattice at rest
   std::unique_ptr<pm::io::Progress> progress;
   auto make_hooks = [&](const std::string& label, me::MpsElastic<T>& model) {
+    const bool crack = label == "crack";
     std::fprintf(stderr, "[mps_harmonics] %s: %d particles, %lld bonds, %d crack pairs, %lld steps\n", label.c_str(),
-                 model.particles(), static_cast<long long>(model.bonds()), model.crack().pair_count(),
-                 static_cast<long long>(c.steps));
+                 model.particles(), static_cast<long long>(model.bonds()), model.crack().pair_count(), static_cast<long long>(c.steps));
     if (progress) progress->done(c.steps);
     progress = std::make_unique<pm::io::Progress>("mps_harmonics " + label, c.steps, c.dt, !opt.quiet);
     me::RunHooks hooks;
     hooks.after_step = [p = progress.get()](std::int64_t k) { p->update(k); };
     // the snapshot writer holds the cracked run's fields: its record goes into that run's checkpoints
-    cs.attach(hooks, [&snapshots, crack = label == "crack"](pm::models::Archive& a) {
+    cs.attach(hooks, [&snapshots, crack](pm::models::Archive& a) {
       if (crack) snapshots.save(a);
     });
     // the store keeps (and resumes) the highest-numbered checkpoints: the cracked run's are numbered
     // after the intact run's steps
-    const std::int64_t offset = label == "crack" ? c.steps : 0;
-    if (offset > 0)
-      hooks.checkpoint.write = [write = hooks.checkpoint.write, offset](std::int64_t k, pm::models::Archive& a) { write(offset + k, a); };
-    if (label == phase) {
-      progress->resume_at(cs.resume_step() - offset);
-      if (label == "crack") snapshots.resume(*cs.resume());
-    }
-    if (label == "crack" && scene.snapshot_every > 0) {
+    if (crack)
+      hooks.checkpoint.write = [write = hooks.checkpoint.write, n = c.steps](std::int64_t k, pm::models::Archive& a) { write(n + k, a); };
+    if (label == phase) progress->resume_at(cs.resume_step() - (crack ? c.steps : 0));
+    if (label == phase && crack) snapshots.resume(*cs.resume());
+    if (crack && scene.snapshot_every > 0) {
       hooks.snapshot_every = scene.snapshot_every;
       hooks.snapshot = [&model, &snapshots, dt = c.dt](std::int64_t step) {
         const auto h = model.host_fields();
-        const pm::io::Fields fields{{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}};
-        snapshots.add(step, static_cast<double>(step) * dt, fields);
+        snapshots.add(step, static_cast<double>(step) * dt, {{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}});
       };
     }
     return hooks;
@@ -105,41 +81,17 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   if (progress) progress->done(c.steps);
   const auto& a = res.intact;
   const auto& b = res.crack;
-  const auto& sa = res.spectrum_intact;
-  const auto& sb = res.spectrum_crack;
-  const auto& ra = res.ratios_intact;
-  const auto& rb = res.ratios_crack;
-  const double f0 = res.f0;
   // a failed analysis (issue 33 item 3) leaves the ratios and spectra empty; the records are written all the same
   const bool analysed = res.analysis_error.empty();
 
   const std::string comp = scene.harmonics_component;
   pm::io::write_csv(cs.out() / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
                     pm::io::Columns{b.times, b.signal, a.signal});
-  if (analysed) {
-    const double a1_intact = pm::analysis::harmonic_amplitudes(sa, f0, 1)[0];
-    const double a1_crack = pm::analysis::harmonic_amplitudes(sb, f0, 1)[0];
-    std::vector<double> f, xa, xb;
-    for (std::size_t k = 0; k < sa.frequency.size() && sa.frequency[k] <= 6.0 * f0; ++k) {
-      f.push_back(sa.frequency[k]);
-      xb.push_back(a1_crack > 0 ? sb.amplitude[k] / a1_crack : 0.0);
-      xa.push_back(a1_intact > 0 ? sa.amplitude[k] / a1_intact : 0.0);
-    }
-    pm::io::write_csv(cs.out() / "spectrum.csv", {"frequency", "crack", "intact"}, pm::io::Columns{f, xb, xa});
+  if (analysed) pm::io::write_csv(cs.out() / "spectrum.csv", {"frequency", "crack", "intact"}, me::relative_spectra(res));
+  for (const auto& [run, name] : {std::pair{&a, "probes_intact.csv"}, std::pair{&b, "probes_crack.csv"}}) {  // u1, u3 at every probe
+    const auto t = me::probe_table(run->history);
+    pm::io::write_csv(cs.out() / name, t.header, t.columns);
   }
-  // u1 and u3 at every probe, both runs (probes_crack.csv, probes_intact.csv)
-  auto write_probes = [&](const me::ProbeHistory& h, const std::string& name) {
-    std::vector<std::string> header = {"time"};
-    std::vector<std::vector<double>> cols = {h.times};
-    for (std::size_t p = 0; p < h.names.size(); ++p)
-      for (int f : {pm::mps::probe_u1, pm::mps::probe_u3}) {
-        header.push_back(h.names[p] + "_" + pm::mps::probe_field_name(f));
-        cols.push_back(h.values[p][f]);
-      }
-    pm::io::write_csv(cs.out() / name, header, cols);
-  };
-  write_probes(a.history, "probes_intact.csv");
-  write_probes(b.history, "probes_crack.csv");
   if (!b.contact.times.empty())
     pm::io::write_csv(cs.out() / "contact_states.csv", {"time", "separation", "stick", "slip"},
                       pm::io::Columns{b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
@@ -154,33 +106,22 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["bonds_intact"] = a.bonds;
   j["crack_pairs"] = b.pairs;
   j["k_prime"] = c.crack.k_prime;
-  j["drive_frequency"] = f0;
+  j["drive_frequency"] = res.f0;
   j["probe"] = scene.harmonics_probe;
   j["component"] = comp;
   j["harmonics"] = {1, 2, 3, 4, 5};
   if (!analysed) j["analysis_error"] = res.analysis_error;
-  j["ratios_crack"] = analysed ? nlohmann::json(rb) : nlohmann::json(nullptr);
-  j["ratios_intact"] = analysed ? nlohmann::json(ra) : nlohmann::json(nullptr);
-  j["ratios_method"] = "A_n/A_1 from the Fourier coefficients at n f0 over 3 drive periods of the steady transmitted "
-                       "burst (window_start .. + 3 T), the same window for both runs";
+  j["ratios_crack"] = analysed ? nlohmann::json(res.ratios_crack) : nlohmann::json(nullptr);
+  j["ratios_intact"] = analysed ? nlohmann::json(res.ratios_intact) : nlohmann::json(nullptr);
+  j["ratios_method"] = me::ratios_method;
   j["window_start"] = analysed ? nlohmann::json(res.window_start) : nlohmann::json(nullptr);
   j["spectrum_ratios_crack"] = analysed ? nlohmann::json(res.spectrum_ratios_crack) : nlohmann::json(nullptr);
   j["spectrum_ratios_intact"] = analysed ? nlohmann::json(res.spectrum_ratios_intact) : nlohmann::json(nullptr);
-  // the same ratios at every probe (how the harmonics fade with the distance from the crack), each in
-  // its own steady window
+  // the same ratios at every probe (how the harmonics fade with the distance from the crack)
   nlohmann::json per_probe = nlohmann::json::object();
-  for (std::size_t p = 0; p < b.history.names.size(); ++p) {
-    const auto& xi = a.history.values[p][field];
-    const auto& xc = b.history.values[p][field];
-    try {
-      const double t0 = pm::analysis::burst_steady_start(a.history.times, xi, f0);
-      per_probe[b.history.names[p]] = {{"ratios_crack", me::burst_ratios(b.history.times, xc, t0, f0)},
-                                       {"ratios_intact", me::burst_ratios(a.history.times, xi, t0, f0)},
-                                       {"window_start", t0}};
-    } catch (const std::invalid_argument& e) {
-      per_probe[b.history.names[p]] = {{"note", e.what()}};
-    }
-  }
+  for (const auto& p : me::probe_ratios(res, field))
+    per_probe[p.name] = p.measured ? nlohmann::json{{"ratios_crack", p.crack}, {"ratios_intact", p.intact}, {"window_start", p.window_start}}
+                                   : nlohmann::json{{"note", p.note}};
   j["probes"] = per_probe;
   j["max_shear_force_intact"] = a.max_shear_force;
   j["normal_reaction"] = res.normal_reaction;
@@ -203,8 +144,8 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
     return 1;
   }
   std::printf("harmonics of %s at probe %s (A_n / A_1, n = 1..5):\n", comp.c_str(), scene.harmonics_probe.c_str());
-  std::printf("  crack : %.3g %.3g %.3g %.3g %.3g\n", rb[0], rb[1], rb[2], rb[3], rb[4]);
-  std::printf("  intact: %.3g %.3g %.3g %.3g %.3g\n", ra[0], ra[1], ra[2], ra[3], ra[4]);
+  for (const auto& [name, r] : {std::pair{"crack ", &res.ratios_crack}, std::pair{"intact", &res.ratios_intact}})
+    std::printf("  %s: %.3g %.3g %.3g %.3g %.3g\n", name, (*r)[0], (*r)[1], (*r)[2], (*r)[3], (*r)[4]);
   if (scene.normal_reaction_ratio > 0)
     std::printf("normal reaction %.4g N/m = %.2f x the intact run's largest shear force %.4g N/m\n",
                 res.normal_reaction, scene.normal_reaction_ratio, a.max_shear_force);
@@ -231,12 +172,8 @@ int main(int argc, char** argv) {
     so.precision = opt.precision;
     so.steps = opt.steps;
     auto scene = pm::io::load_mps_elastic_scene(opt.scene, so);
-    if (scene.config.crack.mode == me::CrackMode::none)
-      throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs a [crack] table");
-    if (scene.harmonics_probe.empty())
-      throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
     if (k_prime > 0) scene.config.crack.k_prime = k_prime;
-    check_record_length(scene, opt);
+    check_scene(scene, opt);
     if (pm::apps::announce_cost("mps_harmonics", scene.header, scene.cost, opt)) return 0;
     return pm::apps::with_precision(scene.header.precision, [&](auto t) { return run_case<decltype(t)>(scene, opt, ropt); });
   });
