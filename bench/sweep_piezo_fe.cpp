@@ -10,10 +10,13 @@
 //   piezo_fe_sweep.json  the 200-frequency sweep of the goal: the mesh, its f_sc error against the finest,
 //                        and the wall time of the 200 harmonic solves; the 3D model's frequencies beside the 2D one
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_piezo_fe --out out/piezo   [--quick: fewer meshes]
+//   sweep_piezo_fe --bender P N: the PVDF bender (2D plane stress, order P, N x 2 cells) built and solved once;
+//   prints {"tip": m, "seconds": s, "unknowns": n} (the FEniCSx peer, bench/peers/dolfinx/piezo_bender.py)
 // Plot: python3 tools/plot_piezo_accuracy_cost.py out/piezo
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -57,6 +60,19 @@ MeshPoint measure(int p, int nl, int cpl) {
 int main(int argc, char** argv) {
   std::filesystem::path out = "out/piezo";
   bool quick = false;
+  if (argc == 4 && !std::strcmp(argv[1], "--bender")) {
+    const int p = std::atoi(argv[2]), n = std::atoi(argv[3]);
+    if (p < 1 || p > 4 || n < 1) {
+      std::fprintf(stderr, "sweep_piezo_fe --bender P N: P in 1..4, N >= 1\n");
+      return 2;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const pz::PiezoBeam b(pz::pvdf_bender_spec(2, pz::Plane::stress, p, n));
+    const double tip = b.tip(b.solve_static());
+    std::printf("{\"tip\": %.9e, \"seconds\": %.6f, \"unknowns\": %lld}\n", tip, seconds_since(t0),
+                static_cast<long long>(b.unknowns()));
+    return 0;
+  }
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
       out = argv[++i];

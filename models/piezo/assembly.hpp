@@ -49,23 +49,31 @@ struct HostCsr {
   std::vector<double> val;
 
   explicit HostCsr(const SparseTriplets& t = {}) : n(t.n) {
-    std::vector<std::size_t> order(t.values.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return t.rows[a] != t.rows[b] ? t.rows[a] < t.rows[b] : t.cols[a] < t.cols[b];
-    });
-    ptr.assign(static_cast<std::size_t>(n) + 1, 0);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const std::size_t i = order[k];
-      if (k > 0 && t.rows[i] == t.rows[order[k - 1]] && t.cols[i] == t.cols[order[k - 1]]) {
-        val.back() += t.values[i];
-        continue;
+    // bucket the entries by row (counting sort), then sort and merge each row's columns
+    const auto rows_n = static_cast<std::size_t>(n);
+    std::vector<std::size_t> start(rows_n + 1, 0);
+    for (const auto r : t.rows) ++start[static_cast<std::size_t>(r) + 1];
+    for (std::size_t r = 0; r < rows_n; ++r) start[r + 1] += start[r];
+    std::vector<std::size_t> order(t.values.size()), fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < t.values.size(); ++k) order[fill[static_cast<std::size_t>(t.rows[k])]++] = k;
+    ptr.assign(rows_n + 1, 0);
+    col.reserve(t.values.size());
+    val.reserve(t.values.size());
+    for (std::size_t r = 0; r < rows_n; ++r) {
+      std::sort(order.begin() + static_cast<std::ptrdiff_t>(start[r]), order.begin() + static_cast<std::ptrdiff_t>(start[r + 1]),
+                [&](std::size_t a, std::size_t b) { return t.cols[a] < t.cols[b]; });
+      const std::size_t first = col.size();
+      for (std::size_t k = start[r]; k < start[r + 1]; ++k) {
+        const std::size_t i = order[k];
+        if (col.size() > first && col.back() == t.cols[i]) {
+          val.back() += t.values[i];
+        } else {
+          col.push_back(t.cols[i]);
+          val.push_back(t.values[i]);
+        }
       }
-      col.push_back(t.cols[i]);
-      val.push_back(t.values[i]);
-      ++ptr[static_cast<std::size_t>(t.rows[i]) + 1];
+      ptr[r + 1] = static_cast<std::int64_t>(col.size());
     }
-    for (std::size_t r = 0; r + 1 < ptr.size(); ++r) ptr[r + 1] += ptr[r];
   }
   // y = A x (y resized)
   void apply(const std::vector<double>& x, std::vector<double>& y) const {
@@ -126,6 +134,8 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
   std::vector<double> grad(static_cast<std::size_t>(ND) * D), val(static_cast<std::size_t>(ND));
   std::vector<double> B(static_cast<std::size_t>(S) * ND * D);  // B[s][(a, c)]
   std::vector<std::int64_t> gl(static_cast<std::size_t>(NL));
+  const int NU = ND * D;
+  std::vector<double> CB(static_cast<std::size_t>(S) * NU), eB(static_cast<std::size_t>(D) * NU);
   for (std::int64_t e = 0; e < ne; ++e) {
     const std::int64_t* en = &in.element_nodes[static_cast<std::size_t>(e) * ND];
     const FeLaw& law = in.laws[static_cast<std::size_t>(in.element_law[static_cast<std::size_t>(e)])];
@@ -197,8 +207,8 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
       }
       const double wd = w * det * scale;
       // CB[s][(a, c)] = C B, eB[k][(a, c)] = e B
-      const int NU = ND * D;
-      std::vector<double> CB(static_cast<std::size_t>(S) * NU, 0.0), eB(static_cast<std::size_t>(D) * NU, 0.0);
+      std::fill(CB.begin(), CB.end(), 0.0);
+      std::fill(eB.begin(), eB.end(), 0.0);
       for (int s = 0; s < S; ++s)
         for (int t = 0; t < S; ++t) {
           const double c = law.C[s][t];
