@@ -108,6 +108,9 @@ class BorderedSolver {
     scale_ = scale;
     std::vector<std::int64_t> rs, cs;
     std::vector<Scalar> vs;
+    rs.reserve(values.size());
+    cs.reserve(values.size());
+    vs.reserve(values.size());
     std::vector<Scalar> Ase(static_cast<std::size_t>(ns_ * ne_), Scalar(0.0));
     Aes_.assign(static_cast<std::size_t>(ne_ * ns_), Scalar(0.0));
     std::vector<Scalar> Aee(static_cast<std::size_t>(ne_ * ne_), Scalar(0.0));
@@ -299,7 +302,7 @@ class PiezoBeam {
     std::vector<double> x(r_), y, Mx;
     double lambda = 0.0;
     for (int it = 0; it < iterations; ++it) {
-      M_.apply(x, Mx);
+      M().apply(x, Mx);
       y = Mx;
       lu.solve(y);
       for (std::size_t i = static_cast<std::size_t>(nu_); i < y.size(); ++i) Mx[i] = 0.0;
@@ -361,7 +364,7 @@ class PiezoBeam {
         vals.push_back(C(0.0, g / omega));
       }
     std::vector<double> Mr;
-    M_.apply(r_, Mr);
+    M().apply(r_, Mr);
     std::vector<C> x(static_cast<std::size_t>(n_));
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = -Mr[i];
     BorderedSolver<C> lu;
@@ -386,7 +389,7 @@ class PiezoBeam {
     C Fv(0.0);
     for (std::int64_t i = 0; i < nu_; ++i) Fv += -Mr[static_cast<std::size_t>(i)] * iw * x[static_cast<std::size_t>(i)];
     h.power_in = 0.5 * Fv.real();
-    const double uCu = damping.alpha * (M_.dot(ur, ur) + M_.dot(ui, ui)) + damping.beta * (Kuu_.dot(ur, ur) + Kuu_.dot(ui, ui));
+    const double uCu = damping.alpha * (M().dot(ur, ur) + M().dot(ui, ui)) + damping.beta * (Kuu().dot(ur, ur) + Kuu().dot(ui, ui));
     h.power_damping = 0.5 * omega * omega * uCu;
     return h;
   }
@@ -422,6 +425,9 @@ class PiezoBeam {
   static SparseTriplets with_identity_rows(const SparseTriplets& A, Pred pred, bool columns_too) {
     SparseTriplets B;
     B.n = A.n;
+    B.rows.reserve(A.values.size());
+    B.cols.reserve(A.values.size());
+    B.values.reserve(A.values.size());
     for (std::size_t k = 0; k < A.values.size(); ++k) {
       if (pred(A.rows[k]) || (columns_too && pred(A.cols[k]))) continue;
       B.add(A.rows[k], A.cols[k], A.values[k]);
@@ -633,9 +639,13 @@ class PiezoBeam {
     in.dof_phi = dof_phi_;
     in.unknowns = n_;
     PiezoMatrices m = assemble_piezo(in);
-    Kt_ = std::move(m.K);
-    Mt_ = std::move(m.M);
-    Kuut_ = std::move(m.Kuu);
+    // merged (one entry per row and column): the CSR of each, and its triplets for the factorisations
+    K_ = HostCsr(m.K);
+    M_ = HostCsr(m.M);
+    Kuu_ = HostCsr(m.Kuu);
+    Kt_ = K_.triplets();
+    Mt_ = M_.triplets();
+    Kuut_ = Kuu_.triplets();
     double du = 0.0, dp = 0.0;
     for (std::size_t k = 0; k < Kt_.values.size(); ++k) {
       if (Kt_.rows[k] != Kt_.cols[k]) continue;
@@ -643,9 +653,6 @@ class PiezoBeam {
       d = std::max(d, std::fabs(Kt_.values[k]));
     }
     phi_scale_ = dp > 0.0 ? std::sqrt(du / dp) : 1.0;
-    K_ = HostCsr(Kt_);
-    M_ = HostCsr(Mt_);
-    Kuu_ = HostCsr(Kuut_);
   }
 
   void check_circuit(const Circuit& c) const {
