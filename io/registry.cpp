@@ -7,6 +7,7 @@
 #include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
+#include "io/piezo_scene.hpp"
 #include "io/solid_scene.hpp"
 
 namespace polymech::io {
@@ -57,6 +58,10 @@ const std::vector<SceneKind>& scene_kinds() {
        {"micro_cantilever"}, [](const std::filesystem::path& f) { load_solid_scene(f); },
        [](const std::filesystem::path&) { return std::string("micro_cantilever"); },
        [](const std::filesystem::path& f) { return load_solid_scene(f).cost; }},
+      {"piezo", "finite-element piezoelectric harvester: static bender, load/frequency sweep, transient (seed 002 paper 1)",
+       {"piezo_harvester"}, [](const std::filesystem::path& f) { load_piezo_scene(f); },
+       [](const std::filesystem::path&) { return std::string("piezo_harvester"); },
+       [](const std::filesystem::path& f) { return load_piezo_scene(f).cost; }},
   };
   return kinds;
 }
