@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "materials/hyperelastic.hpp"
+#include "solid/mass.hpp"
 #include "solid/newton.hpp"
 #include "solid/finite_strain.hpp"
 #include "solid/problem.hpp"
@@ -118,6 +119,7 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
         },
         law_);
     energy_ = ev.energy;
+    if (c0_ > 0.0) add_inertia(u, this->f_int_);
     Kokkos::deep_copy(f_load_, this->f_ext_);
     solvers::scale(this->dof_count(), static_cast<T>(lambda), f_load_, f_load_);
     if (pressure_.faces() > 0) {
@@ -151,6 +153,15 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
       append_matrices<D>(face_stiffness_, static_cast<int>(nh.extent(1)),
                          [&](std::size_t f, int a) { return static_cast<std::int64_t>(nh(f, a)); }, this->constrained_, t);
     }
+    if (c0_ > 0.0) {  // the inertia's c0 rho M (free-free block)
+      if (mass_.n == 0) mass_ = assemble_mass(this->assembly_input(), 1.0);
+      const double f = c0_ * rho_;
+      for (std::size_t k = 0; k < mass_.values.size(); ++k) {
+        t.rows.push_back(mass_.rows[k]);
+        t.cols.push_back(mass_.cols[k]);
+        t.values.push_back(f * mass_.values[k]);
+      }
+    }
     for (std::int64_t i = 0; i < t.n; ++i)
       if (this->constrained_[static_cast<std::size_t>(i)]) {
         t.rows.push_back(i);
@@ -158,6 +169,31 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
         t.values.push_back(1.0);
       }
     return t;
+  }
+
+  // The inertia of a Newmark step (models/solid/finite_strain_dynamics.hpp): with c0 > 0 the residual gains
+  // c0 rho M (u - u_pred) (M the consistent mass of unit density, free-free block) and the tangent c0 rho M, so a
+  // Newton solve finds u_{n+1} with M a_{n+1} + f_int(u_{n+1}) = f_ext, a_{n+1} = c0 (u_{n+1} - u_pred). It is
+  // also the gradient of 1/2 c0 rho (u - u_pred)^T M (u - u_pred) + W(u) - f.u, so the line search keeps its
+  // potential. c0 = 0: quasi-static again.
+  void set_inertia(double c0, double rho, const View1<T>& u_pred) {
+    if (!(c0 >= 0.0) || !(rho > 0.0)) throw std::invalid_argument("solid::Hyperelastic: inertia needs c0 >= 0, rho > 0");
+    c0_ = c0;
+    rho_ = rho;
+    u_pred_ = u_pred;
+    if (inertia_work_.extent(0) != u_pred.extent(0)) inertia_work_ = View1<T>("polymech::solid::fs_inertia", u_pred.extent(0));
+  }
+  // f += c0 rho M (u - u_pred) (public only for nvcc's extended lambda)
+  void add_inertia(const View1<T>& u, const View1<T>& f) {
+    const auto w = inertia_work_, a = u, b = u_pred_;
+    Kokkos::parallel_for(
+        "polymech::solid::fs_inertia_difference", Kokkos::RangePolicy<ExecSpace>(0, this->dof_count()),
+        KOKKOS_LAMBDA(const Index i) { w(i) = a(i) - b(i); });
+    add_mass_apply<true>(this->op_.el, static_cast<T>(c0_ * rho_), inertia_work_, f);
+  }
+  // y += rho M x on the free DoFs (the consistent mass, matrix-free).
+  void add_mass(double rho, const View1<T>& x, const View1<T>& y) const {
+    add_mass_apply<true>(this->op_.el, static_cast<T>(rho), x, y);
   }
 
   // --- the hooks of NewtonSolid (models/solid/newton.hpp) ---
@@ -211,6 +247,9 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
   }
 
   HyperelasticLaw law_;
+  double c0_ = 0.0, rho_ = 0.0;
+  View1<T> u_pred_, inertia_work_;
+  mutable Triplets mass_;  // the unit-density consistent mass, assembled on the first tangent with inertia
   PressureFaces<D> pressure_;
   FiniteStrainElementData<T> elements_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> face_force_, face_stiffness_;

@@ -190,6 +190,11 @@ class NewtonSolid : public SolidProblem<T, D> {
     return out;
   }
 
+  // One Newton solve from the converged state to load factor lambda, which may equal the current one (a time
+  // step of the implicit dynamics, models/solid/finite_strain_dynamics.hpp, which sets the inertia first). On
+  // success the state is committed; false: nothing changed, the reason in last_failure().
+  bool solve_step(double lambda, StepResult& result) { return step(lambda, result); }
+
   // (Public only because nvcc's extended lambdas may not live in private member functions.)
   double dot(const View1<T>& a, const View1<T>& b) const {
     double s = 0.0;
