@@ -111,7 +111,7 @@ class Isph {
     neighbors::for_each_row("polymech::sph::divergence_fluid", ff_, sph::FluidDivergence<T, D>{f_, par_});
     neighbors::for_each_row("polymech::sph::diagonal_fluid", ff_, sph::FluidDiagonal<T, D>{f_, par_, diag_});
     neighbors::for_each_row("polymech::sph::ppe_rhs", fw_, sph::WallDivergenceRhs<T, D>{f_, wp_, par_, diag_});
-    ppe_.solve(f_, wp_, par_, ff_, fw_, gf_, box_);
+    ppe_.solve(f_, wp_, par_, ff_, fw_, gf_, box_, step_);
     neighbors::for_each_row("polymech::sph::ghost_pressure", gf_,
                             sph::GhostPressure<T, D>{f_, wp_, par_, f_.pressure, true});
     neighbors::for_each_row("polymech::sph::pressure_gradient", ff_, sph::FluidPressureGradient<T, D>{f_, par_});
