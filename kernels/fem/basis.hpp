@@ -65,6 +65,29 @@ inline double lagrange_derivative(const std::vector<double>& nodes, int i, doubl
   return s;
 }
 
+// The 1D basis of the GLL-node Lagrange element of order n - 1 tabulated at the n Gauss points, for the host
+// assemblies that evaluate the full tensor-product basis point by point (the solid stiffness and mass, the
+// piezoelectric matrices): value[q n + i] = l_i(x_q), derivative[q n + i] = l_i'(x_q), weights[q].
+struct GaussTables {
+  int n = 0;
+  std::vector<double> weights, value, derivative;
+};
+inline GaussTables gauss_tables(int n) {
+  GaussTables t;
+  t.n = n;
+  const std::vector<double> nodes = gauss_lobatto_nodes(n);
+  std::vector<double> xq;
+  gauss_legendre(n, xq, t.weights);
+  t.value.resize(static_cast<std::size_t>(n) * n);
+  t.derivative.resize(t.value.size());
+  for (int q = 0; q < n; ++q)
+    for (int i = 0; i < n; ++i) {
+      t.value[static_cast<std::size_t>(q) * n + i] = lagrange(nodes, i, xq[q]);
+      t.derivative[static_cast<std::size_t>(q) * n + i] = lagrange_derivative(nodes, i, xq[q]);
+    }
+  return t;
+}
+
 // The 1D factors of an order N-1 hexahedral element evaluated at Q Gauss points per direction:
 //   B[q][i]  = l_i(x_q)          values of the nodal basis (interpolation nodes -> points)
 //   D[q][i]  = l_i'(x_q)         derivatives of the nodal basis at the points

@@ -40,15 +40,8 @@ struct AssemblyInput {
 inline Triplets assemble_stiffness(const AssemblyInput& in) {
   const int D = in.dim, N = in.order + 1, Q = N;
   const int ND = D == 3 ? N * N * N : N * N, S = D == 3 ? 6 : 3;
-  const std::vector<double> nodes = fem::gauss_lobatto_nodes(N);
-  std::vector<double> xq, wq;
-  fem::gauss_legendre(Q, xq, wq);
-  std::vector<double> L(static_cast<std::size_t>(Q) * N), dL(L.size());  // l_i(x_q), l_i'(x_q)
-  for (int q = 0; q < Q; ++q)
-    for (int i = 0; i < N; ++i) {
-      L[static_cast<std::size_t>(q) * N + i] = fem::lagrange(nodes, i, xq[q]);
-      dL[static_cast<std::size_t>(q) * N + i] = fem::lagrange_derivative(nodes, i, xq[q]);
-    }
+  const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N: l_i(x_q), l_i'(x_q), w_q
+  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
   const std::int64_t ne = static_cast<std::int64_t>(in.element_nodes.size()) / ND;
   const std::int64_t ndof = static_cast<std::int64_t>(in.constrained.size());
   auto voigt = [&](int s) { return D == 3 ? s : (s == 2 ? 5 : s); };

@@ -132,15 +132,8 @@ void add_lumped_mass(const SolidElements<T, D>& el, T rho, const View1<T>& m) {
 inline Triplets assemble_mass(const AssemblyInput& in, double rho) {
   const int D = in.dim, N = in.order + 1, Q = N;
   const int ND = D == 3 ? N * N * N : N * N, QD = ND;
-  const std::vector<double> nodes = fem::gauss_lobatto_nodes(N);
-  std::vector<double> xq, wq;
-  fem::gauss_legendre(Q, xq, wq);
-  std::vector<double> L(static_cast<std::size_t>(Q) * N), dL(L.size());
-  for (int q = 0; q < Q; ++q)
-    for (int i = 0; i < N; ++i) {
-      L[static_cast<std::size_t>(q) * N + i] = fem::lagrange(nodes, i, xq[q]);
-      dL[static_cast<std::size_t>(q) * N + i] = fem::lagrange_derivative(nodes, i, xq[q]);
-    }
+  const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N
+  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
   const std::int64_t ne = static_cast<std::int64_t>(in.element_nodes.size()) / ND;
   Triplets t;
   t.n = static_cast<std::int64_t>(in.constrained.size());

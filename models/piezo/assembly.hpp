@@ -27,20 +27,18 @@
 #include <vector>
 
 #include "fem/basis.hpp"
+#include "solid/assembly.hpp"
 #include "piezo/fe_law.hpp"
 
 namespace polymech::piezo {
 
-struct SparseTriplets {
-  std::int64_t n = 0;
-  std::vector<std::int64_t> rows, cols;
-  std::vector<double> values;
-  void add(std::int64_t r, std::int64_t c, double v) {
-    rows.push_back(r);
-    cols.push_back(c);
-    values.push_back(v);
-  }
-};
+// Coordinate form of a sparse matrix: the solid layer's (kernels/solid/assembly.hpp).
+using SparseTriplets = solid::Triplets;
+inline void add_entry(SparseTriplets& t, std::int64_t r, std::int64_t c, double v) {
+  t.rows.push_back(r);
+  t.cols.push_back(c);
+  t.values.push_back(v);
+}
 
 // A host CSR matrix (repeated entries summed) for the products the solvers need: y = A x.
 struct HostCsr {
@@ -126,15 +124,8 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
   const int D = in.dim, N = in.order + 1, Q = N;
   if (D != 2 && D != 3) throw std::invalid_argument("assemble_piezo: dimension " + std::to_string(D));
   const int ND = D == 3 ? N * N * N : N * N, QD = D == 3 ? Q * Q * Q : Q * Q, S = D == 3 ? 6 : 3;
-  const std::vector<double> nodes = fem::gauss_lobatto_nodes(N);
-  std::vector<double> xq, wq;
-  fem::gauss_legendre(Q, xq, wq);
-  std::vector<double> L(static_cast<std::size_t>(Q) * N), dL(L.size());
-  for (int q = 0; q < Q; ++q)
-    for (int i = 0; i < N; ++i) {
-      L[static_cast<std::size_t>(q) * N + i] = fem::lagrange(nodes, i, xq[q]);
-      dL[static_cast<std::size_t>(q) * N + i] = fem::lagrange_derivative(nodes, i, xq[q]);
-    }
+  const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N
+  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
   const std::int64_t ne = static_cast<std::int64_t>(in.element_law.size());
   if (static_cast<std::int64_t>(in.element_nodes.size()) != ne * ND)
     throw std::invalid_argument("assemble_piezo: element table and law list disagree");
@@ -279,15 +270,15 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
       for (int j = 0; j < NL; ++j) {
         const double v = Ke[static_cast<std::size_t>(i) * NL + j];
         if (gl[j] < 0 || v == 0.0) continue;
-        out.K.add(gl[i], gl[j], v);
-        if (i < ND * D && j < ND * D) out.Kuu.add(gl[i], gl[j], v);
+        add_entry(out.K, gl[i], gl[j], v);
+        if (i < ND * D && j < ND * D) add_entry(out.Kuu, gl[i], gl[j], v);
       }
     }
     for (int a = 0; a < ND; ++a)
       for (int c = 0; c < ND; ++c)
         for (int d = 0; d < D; ++d) {
           const std::int64_t r = gl[static_cast<std::size_t>(a * D + d)], col = gl[static_cast<std::size_t>(c * D + d)];
-          if (r >= 0 && col >= 0) out.M.add(r, col, Me[static_cast<std::size_t>(a) * ND + c]);
+          if (r >= 0 && col >= 0) add_entry(out.M, r, col, Me[static_cast<std::size_t>(a) * ND + c]);
         }
   }
   return out;

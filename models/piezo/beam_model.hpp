@@ -145,7 +145,18 @@ class BorderedSolver {
   }
 
   // b <- A^-1 b
-  void solve(std::vector<Scalar>& b) const {
+  void solve(std::vector<Scalar>& b) const { solve(b, {}); }
+
+  // b <- (A + E)^-1 b where E adds border_add (border x border, row-major, unscaled; empty: nothing) to the
+  // border block: a change of the electrode rows only (another load of the circuit) reuses the factorisation.
+  void solve(std::vector<Scalar>& b, const std::vector<Scalar>& border_add) const {
+    std::vector<Scalar> S = S_;
+    if (!border_add.empty())
+      for (std::int64_t a = 0; a < ne_; ++a)
+        for (std::int64_t c = 0; c < ne_; ++c)
+          S[static_cast<std::size_t>(a * ne_ + c)] += border_add[static_cast<std::size_t>(a * ne_ + c)] *
+                                                     scale_[static_cast<std::size_t>(ns_ + a)] *
+                                                     scale_[static_cast<std::size_t>(ns_ + c)];
     for (std::size_t i = 0; i < b.size(); ++i) b[i] *= scale_[i];
     lu_.solve(b.data());
     std::vector<Scalar> xe(static_cast<std::size_t>(ne_));
@@ -154,7 +165,7 @@ class BorderedSolver {
       for (std::int64_t i = 0; i < ns_; ++i) t -= Aes_[static_cast<std::size_t>(a * ns_ + i)] * b[static_cast<std::size_t>(i)];
       xe[static_cast<std::size_t>(a)] = t;
     }
-    dense_solve(S_, xe);
+    dense_solve(S, xe);
     for (std::int64_t a = 0; a < ne_; ++a) {
       for (std::int64_t i = 0; i < ns_; ++i)
         b[static_cast<std::size_t>(i)] -= Z_[static_cast<std::size_t>(a * ns_ + i)] * xe[static_cast<std::size_t>(a)];
@@ -329,13 +340,19 @@ class PiezoBeam {
   //   [Kuu - w^2 M + i w C, Kuphi; Kuphi^T, -Kpp + (i / w) G] x = [-M r; 0]
   // (the electrode rows: i w Q = -G V and -Q = Kuphi^T u - Kpp phi, assembly.hpp and circuit.hpp).
   HarmonicResponse harmonic(double omega, const Circuit& circuit, const Rayleigh& damping) const {
+    return harmonic(omega, std::vector<Circuit>{circuit}, damping).front();
+  }
+
+  // The same for several circuits at one frequency: the circuit enters the electrode block only, so one
+  // factorisation serves them all (the bordered solve's Schur complement gains (i/w) G per circuit).
+  std::vector<HarmonicResponse> harmonic(double omega, const std::vector<Circuit>& circuits, const Rayleigh& damping) const {
     using C = std::complex<double>;
     if (!(omega > 0.0)) throw std::invalid_argument("piezo beam: harmonic solve needs w > 0");
-    check_circuit(circuit);
+    for (const auto& c : circuits) check_circuit(c);
     const C iw(0.0, omega);
     std::vector<std::int64_t> rows, cols;
     std::vector<C> vals;
-    rows.reserve(Kt_.values.size() + 2 * Mt_.values.size());
+    rows.reserve(Kt_.values.size() + Kuut_.values.size() + Mt_.values.size());
     cols.reserve(rows.capacity());
     vals.reserve(rows.capacity());
     for (std::size_t k = 0; k < Kt_.values.size(); ++k) {
@@ -353,45 +370,45 @@ class PiezoBeam {
       cols.push_back(Mt_.cols[k]);
       vals.push_back((-omega * omega + iw * damping.alpha) * Mt_.values[k]);
     }
-    const std::vector<double> G = circuit.conductance();
-    const int ne = electrodes();
-    for (int a = 0; a < ne; ++a)
-      for (int b = 0; b < ne; ++b) {
-        const double g = G[static_cast<std::size_t>(a) * ne + b];
-        if (g == 0.0) continue;
-        rows.push_back(electrode_dof_[static_cast<std::size_t>(a)]);
-        cols.push_back(electrode_dof_[static_cast<std::size_t>(b)]);
-        vals.push_back(C(0.0, g / omega));
-      }
-    std::vector<double> Mr;
-    M().apply(r_, Mr);
-    std::vector<C> x(static_cast<std::size_t>(n_));
-    for (std::size_t i = 0; i < x.size(); ++i) x[i] = -Mr[i];
     BorderedSolver<C> lu;
     lu.factor(n_, electrodes(), rows, cols, vals, scales());
-    lu.solve(x);
-    HarmonicResponse h;
-    h.omega = omega;
-    h.tip = tip(x);
-    h.V.resize(static_cast<std::size_t>(ne));
-    for (int k = 0; k < ne; ++k) h.V[static_cast<std::size_t>(k)] = x[static_cast<std::size_t>(electrode_dof_[static_cast<std::size_t>(k)])];
-    for (const auto& rs : circuit.resistors()) {
-      const C va = rs.a == Circuit::ground ? C(0.0) : h.V[static_cast<std::size_t>(rs.a)];
-      const C vb = rs.b == Circuit::ground ? C(0.0) : h.V[static_cast<std::size_t>(rs.b)];
-      h.power += 0.5 * std::norm(va - vb) / rs.R;
+    std::vector<double> Mr;
+    M().apply(r_, Mr);
+    const int ne = electrodes();
+    std::vector<HarmonicResponse> out;
+    out.reserve(circuits.size());
+    for (const auto& circuit : circuits) {
+      const std::vector<double> G = circuit.conductance();
+      std::vector<C> add(G.size());
+      for (std::size_t k = 0; k < G.size(); ++k) add[k] = C(0.0, G[k] / omega);
+      std::vector<C> x(static_cast<std::size_t>(n_));
+      for (std::size_t i = 0; i < x.size(); ++i) x[i] = -Mr[i];
+      lu.solve(x, add);
+      HarmonicResponse h;
+      h.omega = omega;
+      h.tip = tip(x);
+      h.V.resize(static_cast<std::size_t>(ne));
+      for (int k = 0; k < ne; ++k) h.V[static_cast<std::size_t>(k)] = x[static_cast<std::size_t>(electrode_dof_[static_cast<std::size_t>(k)])];
+      for (const auto& rs : circuit.resistors()) {
+        const C va = rs.a == Circuit::ground ? C(0.0) : h.V[static_cast<std::size_t>(rs.a)];
+        const C vb = rs.b == Circuit::ground ? C(0.0) : h.V[static_cast<std::size_t>(rs.b)];
+        h.power += 0.5 * std::norm(va - vb) / rs.R;
+      }
+      // mean input power 1/2 Re(F^H v) with F = -M r, v = i w u; damping 1/2 w^2 u^H C u
+      std::vector<double> ur(static_cast<std::size_t>(n_), 0.0), ui(ur.size());
+      for (std::int64_t i = 0; i < nu_; ++i) {
+        ur[static_cast<std::size_t>(i)] = x[static_cast<std::size_t>(i)].real();
+        ui[static_cast<std::size_t>(i)] = x[static_cast<std::size_t>(i)].imag();
+      }
+      C Fv(0.0);
+      for (std::int64_t i = 0; i < nu_; ++i) Fv += -Mr[static_cast<std::size_t>(i)] * iw * x[static_cast<std::size_t>(i)];
+      h.power_in = 0.5 * Fv.real();
+      const double uCu =
+          damping.alpha * (M().dot(ur, ur) + M().dot(ui, ui)) + damping.beta * (Kuu().dot(ur, ur) + Kuu().dot(ui, ui));
+      h.power_damping = 0.5 * omega * omega * uCu;
+      out.push_back(std::move(h));
     }
-    // mean input power 1/2 Re(F^H v) with F = -M r, v = i w u; damping 1/2 w^2 u^H C u
-    std::vector<double> ur(static_cast<std::size_t>(n_), 0.0), ui(ur.size()), t;
-    for (std::int64_t i = 0; i < nu_; ++i) {
-      ur[static_cast<std::size_t>(i)] = x[static_cast<std::size_t>(i)].real();
-      ui[static_cast<std::size_t>(i)] = x[static_cast<std::size_t>(i)].imag();
-    }
-    C Fv(0.0);
-    for (std::int64_t i = 0; i < nu_; ++i) Fv += -Mr[static_cast<std::size_t>(i)] * iw * x[static_cast<std::size_t>(i)];
-    h.power_in = 0.5 * Fv.real();
-    const double uCu = damping.alpha * (M().dot(ur, ur) + M().dot(ui, ui)) + damping.beta * (Kuu().dot(ur, ur) + Kuu().dot(ui, ui));
-    h.power_damping = 0.5 * omega * omega * uCu;
-    return h;
+    return out;
   }
 
   // Symmetric scaling of the coupled matrix. Its blocks differ by ~19 orders of magnitude (stiffness ~1e9 Pa m,
@@ -430,10 +447,10 @@ class PiezoBeam {
     B.values.reserve(A.values.size());
     for (std::size_t k = 0; k < A.values.size(); ++k) {
       if (pred(A.rows[k]) || (columns_too && pred(A.cols[k]))) continue;
-      B.add(A.rows[k], A.cols[k], A.values[k]);
+      add_entry(B, A.rows[k], A.cols[k], A.values[k]);
     }
     for (std::int64_t r = 0; r < A.n; ++r)
-      if (pred(r)) B.add(r, r, 1.0);
+      if (pred(r)) add_entry(B, r, r, 1.0);
     return B;
   }
 

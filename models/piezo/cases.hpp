@@ -12,8 +12,6 @@
 
 namespace polymech::piezo {
 
-inline constexpr double kPvdfDensity = 1780.0;  // [kg/m^3] (the static bender does not use it)
-
 inline BeamSpec pvdf_bender_spec(int dim, Plane plane, int order, int cells_length, double volts = 100.0) {
   const Pvdf pv{};
   BeamSpec s;
@@ -25,7 +23,7 @@ inline BeamSpec pvdf_bender_spec(int dim, Plane plane, int order, int cells_leng
   s.cells_length = cells_length;
   s.cells_width = 2;
   s.layers = {{"lower", 5e-4, true, 1, 1}, {"upper", 5e-4, true, -1, 1}};
-  s.piezo = isotropic_piezo(pv.E, pv.nu, pv.d31, pv.eps_r, kPvdfDensity);
+  s.piezo = isotropic_piezo(pv.E, pv.nu, pv.d31, pv.eps_r, pv.rho);
   s.electrodes = {{"ground", "bottom", ElectrodeKind::grounded, 0.0}, {"top", "top", ElectrodeKind::prescribed, volts}};
   return s;
 }

@@ -51,14 +51,12 @@
 
 namespace polymech::piezo {
 
-inline constexpr double kPvdfDensity = 1780.0;  // [kg/m^3] (Hwang & Park's PVDF; the bender is static)
-
 // The piezoelectric law of a material name of harvester_setup.hpp.
 inline PiezoCeramic piezo_material(const std::string& name) {
   if (name == "pzt5a") return pzt5a();
   if (name == "pvdf") {
     const Pvdf p{};
-    return isotropic_piezo(p.E, p.nu, p.d31, p.eps_r, kPvdfDensity);
+    return isotropic_piezo(p.E, p.nu, p.d31, p.eps_r, p.rho);
   }
   throw std::invalid_argument("piezo harvester: no piezoelectric material '" + name + "' (allowed: pzt5a, pvdf)");
 }
@@ -282,11 +280,18 @@ inline CaseSummary run_harmonic(const HarvesterSetup& s, CaseTable& frf, CaseTab
   per_load = CaseTable({"R_ohm", "f_peak_hz", "P_max", "V_at_peak", "tip_at_peak", "P_max_ei09", "P_max_ei09_induced"});
   double best_P = -1.0, best_R = 0.0, best_f = 0.0, best_V = 0.0;
   double best_ei = -1.0, best_ei_R = 0.0, best_eis = -1.0, best_eis_R = 0.0;
-  for (const double R : loads) {
-    const Circuit c = make_circuit(beam, s, R);
+  // one factorisation per frequency for every load (PiezoBeam::harmonic over circuits)
+  std::vector<Circuit> circuits;
+  for (const double R : loads) circuits.push_back(make_circuit(beam, s, R));
+  std::vector<std::vector<HarmonicResponse>> by_frequency;
+  by_frequency.reserve(f.size());
+  for (const double fi : f) by_frequency.push_back(beam.harmonic(tau * fi, circuits, damping));
+  for (std::size_t ri = 0; ri < loads.size(); ++ri) {
+    const double R = loads[ri];
     double P = -1.0, fp = 0.0, Vp = 0.0, tp = 0.0, Pei = 0.0, Peis = 0.0;
-    for (const double fi : f) {
-      const HarmonicResponse h = beam.harmonic(tau * fi, c, damping);
+    for (std::size_t fk = 0; fk < f.size(); ++fk) {
+      const double fi = f[fk];
+      const HarmonicResponse& h = by_frequency[fk][ri];
       const std::complex<double> va = la == Circuit::ground ? 0.0 : h.V[static_cast<std::size_t>(la)];
       const std::complex<double> vb = lb == Circuit::ground ? 0.0 : h.V[static_cast<std::size_t>(lb)];
       const double V = A * std::abs(va - vb), p = A * A * h.power, tip = A * std::abs(h.tip);
@@ -437,6 +442,7 @@ class HarvesterTransient {
     a.put_vector(p + "v", t.v);
     a.put_vector(p + "a", t.a);
     a.put_vector(p + "Q", t.Q);
+    a.put_vector(p + "jacobian", t.jacobian);  // partitioned: the Broyden Jacobian (restart bitwise)
   }
   void load(const models::Archive& a, const std::string& p) {
     TransientState t;
@@ -455,6 +461,7 @@ class HarvesterTransient {
     t.v = a.get_vector<double>(p + "v");
     t.a = a.get_vector<double>(p + "a");
     t.Q = a.get_vector<double>(p + "Q");
+    t.jacobian = a.get_vector<double>(p + "jacobian");
     transient_.restore(t);  // refuses a state of another size
   }
 

@@ -177,6 +177,7 @@ inline IsotropicElastic brass() { return {105e9, 0.34, 9000.0}; }
 // permittivity; the coupling is weak, d31^2 E / eps = 0.9 %, so the clamped/free distinction is below 1 %).
 struct Pvdf {
   double E = 2e9, nu = 0.29, d31 = 2.2e-11, eps_r = 12.0;
+  double rho = 1780.0;  // [kg/m^3] (a handbook value for PVDF; the static bender does not use it)
   double eps33T() const { return eps_r * kEps0; }
   double eps33_bar() const { return eps33T() - d31 * d31 * E; }
 };

@@ -59,6 +59,7 @@ struct TransientState {
   std::int64_t step = 0;
   double time = 0.0, base_acceleration = 0.0;
   std::vector<double> x, v, a, Q;  // unknowns, their rates (displacements only), electrode charges
+  std::vector<double> jacobian;     // the partitioned loop's Broyden Jacobian (empty before its first step)
   double work_in = 0.0, work_damping = 0.0, work_circuit = 0.0, energy0 = 0.0;
 };
 
@@ -81,14 +82,14 @@ class PiezoTransient {
     const SparseTriplets& Kuu = beam.Kuu_triplets();
     SparseTriplets A = K;
     const double cm = c_[0] + c_[1] * o.damping.alpha, ck = c_[1] * o.damping.beta;
-    for (std::size_t k = 0; k < M.values.size(); ++k) A.add(M.rows[k], M.cols[k], cm * M.values[k]);
+    for (std::size_t k = 0; k < M.values.size(); ++k) add_entry(A, M.rows[k], M.cols[k], cm * M.values[k]);
     if (ck != 0.0)
-      for (std::size_t k = 0; k < Kuu.values.size(); ++k) A.add(Kuu.rows[k], Kuu.cols[k], ck * Kuu.values[k]);
+      for (std::size_t k = 0; k < Kuu.values.size(); ++k) add_entry(A, Kuu.rows[k], Kuu.cols[k], ck * Kuu.values[k]);
     const int ne = beam.electrodes();
     for (int i = 0; i < ne; ++i)
       for (int j = 0; j < ne; ++j) {
         const double gij = G_[static_cast<std::size_t>(i) * ne + j];
-        if (gij != 0.0) A.add(beam.electrode_unknown(i), beam.electrode_unknown(j), -0.5 * dt * gij);
+        if (gij != 0.0) add_entry(A, beam.electrode_unknown(i), beam.electrode_unknown(j), -0.5 * dt * gij);
       }
     beam.factor(A, solver_);
     // the capacitance block (for the partitioned scheme's optional start): the electrode rows of A
@@ -211,7 +212,9 @@ class PiezoTransient {
 
   const TransientState& state() const { return s_; }
   void restore(const TransientState& s) {
-    if (s.x.size() != s_.x.size() || s.v.size() != s_.v.size() || s.a.size() != s_.a.size() || s.Q.size() != s_.Q.size())
+    const std::size_t m = s_.Q.size();
+    if (s.x.size() != s_.x.size() || s.v.size() != s_.v.size() || s.a.size() != s_.a.size() || s.Q.size() != m ||
+        (!s.jacobian.empty() && s.jacobian.size() != m * m))
       throw std::invalid_argument("piezo transient: the restart state does not fit this model");
     s_ = s;
   }
@@ -245,8 +248,9 @@ class PiezoTransient {
     };
     solves_in_step_ = 0;
     std::vector<double> V = Vn, r = residual(V, x);
-    if (J_.empty()) {  // the first step's Jacobian
-      J_.assign(m * m, 0.0);
+    std::vector<double>& J = s_.jacobian;
+    if (J.empty()) {  // the first step's Jacobian
+      J.assign(m * m, 0.0);
       if (o_.finite_difference_jacobian) {
         double vs = 1.0;
         for (const double v : V) vs = std::max(vs, std::fabs(v));
@@ -256,10 +260,10 @@ class PiezoTransient {
           const double h = 1e-3 * vs;
           Vp[j] += h;
           const std::vector<double> rp = residual(Vp, xt);
-          for (std::size_t i = 0; i < m; ++i) J_[i * m + j] = (rp[i] - r[i]) / h;
+          for (std::size_t i = 0; i < m; ++i) J[i * m + j] = (rp[i] - r[i]) / h;
         }
       } else {
-        J_ = cap_;
+        J = cap_;
       }
     }
     double qscale = 1e-30;
@@ -278,7 +282,7 @@ class PiezoTransient {
       if (it > 0 && rn > 0.5 * previous && rn <= 1e-6 * qscale) return solves_in_step_;
       previous = rn;
       std::vector<double> dV = r;  // J dV = -r
-      BorderedSolver<double>::dense_solve(J_, dV);
+      BorderedSolver<double>::dense_solve(J, dV);
       for (std::size_t k = 0; k < m; ++k) {
         dV[k] = -dV[k];
         V[k] += dV[k];
@@ -293,9 +297,9 @@ class PiezoTransient {
       if (dd > 0.0 && r1 > 1e-6 * qscale)
         for (std::size_t i = 0; i < m; ++i) {
           double jd = 0.0;
-          for (std::size_t j = 0; j < m; ++j) jd += J_[i * m + j] * dV[j];
+          for (std::size_t j = 0; j < m; ++j) jd += J[i * m + j] * dV[j];
           const double u = (rn1[i] - r[i] - jd) / dd;
-          for (std::size_t j = 0; j < m; ++j) J_[i * m + j] += u * dV[j];
+          for (std::size_t j = 0; j < m; ++j) J[i * m + j] += u * dV[j];
         }
       r = rn1;
     }
@@ -306,7 +310,7 @@ class PiezoTransient {
   const PiezoBeam& beam_;
   Circuit circuit_;
   TransientOptions o_;
-  std::vector<double> G_, cap_, J_;
+  std::vector<double> G_, cap_;
   std::array<double, 6> c_{};
   BorderedSolver<double> solver_;
   TransientState s_;

@@ -30,6 +30,7 @@ APPS = {
     "efg": "scenes/efg/edge_crack_static.toml",
     "helmholtz": "scenes/helmholtz/cube.toml",
     "isph": "scenes/isph/hydrostatic.toml",
+    "piezo_harvester": "scenes/piezo/pvdf_bender.toml",
     "polymech": "scenes/pd/tension_lattice.toml",  # run by pd_tension
 }
 DISPATCHED = {"polymech": "pd_tension"}  # the app that reports the options polymech hands on
