@@ -41,7 +41,6 @@ inline Triplets assemble_stiffness(const AssemblyInput& in) {
   const int D = in.dim, N = in.order + 1, Q = N;
   const int ND = D == 3 ? N * N * N : N * N, S = D == 3 ? 6 : 3;
   const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N: l_i(x_q), l_i'(x_q), w_q
-  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
   const std::int64_t ne = static_cast<std::int64_t>(in.element_nodes.size()) / ND;
   const std::int64_t ndof = static_cast<std::int64_t>(in.constrained.size());
   auto voigt = [&](int s) { return D == 3 ? s : (s == 2 ? 5 : s); };
@@ -62,41 +61,8 @@ inline Triplets assemble_stiffness(const AssemblyInput& in) {
     Ke.assign(static_cast<std::size_t>(ND * D) * (ND * D), 0.0);
     for (int q = 0; q < QD; ++q) {
       if (per_point) load_material(&in.point_material[(static_cast<std::size_t>(e) * QD + q) * 36]);
-      const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
-      double w = 1.0, J[3][3] = {};
-      for (int d = 0; d < D; ++d) w *= wq[qi[d]];
-      for (int a = 0; a < ND; ++a) {  // reference gradient of N_a, and J = sum_a x_a (x) grad_ref N_a
-        const int ai[3] = {a % N, (a / N) % N, a / (N * N)};
-        for (int r = 0; r < D; ++r) {
-          double g = 1.0;
-          for (int d = 0; d < D; ++d)
-            g *= (d == r ? dL : L)[static_cast<std::size_t>(qi[d]) * N + ai[d]];
-          grad[static_cast<std::size_t>(a) * D + r] = g;
-          for (int c = 0; c < D; ++c) J[c][r] += in.coordinates[static_cast<std::size_t>(en[a]) * D + c] * g;
-        }
-      }
-      double Ji[3][3], det;
-      if (D == 2) {
-        det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        Ji[0][0] = J[1][1] / det;
-        Ji[0][1] = -J[0][1] / det;
-        Ji[1][0] = -J[1][0] / det;
-        Ji[1][1] = J[0][0] / det;
-      } else {
-        det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-              J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-            Ji[i][j] = (J[r0][c0] * J[r1][c1] - J[r0][c1] * J[r1][c0]) / det;
-          }
-      }
-      for (int a = 0; a < ND; ++a) {  // physical gradients, in place
-        double g[3] = {0, 0, 0};
-        for (int j = 0; j < D; ++j)
-          for (int r = 0; r < D; ++r) g[j] += grad[static_cast<std::size_t>(a) * D + r] * Ji[r][j];
-        for (int j = 0; j < D; ++j) grad[static_cast<std::size_t>(a) * D + j] = g[j];
-      }
+      double w;
+      const double det = fem::tensor_point(tables, D, q, en, in.coordinates, nullptr, grad.data(), w);
       const double wd = w * det;
       for (int a = 0; a < ND; ++a)
         for (int c = 0; c < D; ++c)

@@ -130,38 +130,22 @@ void add_lumped_mass(const SolidElements<T, D>& el, T rho, const View1<T>& m) {
 // (no identity rows: combine with assemble_stiffness, which has them). Direct evaluation of the full
 // tensor-product basis at the Gauss points (the check of the matrix-free form; O(N^(2D)) per element).
 inline Triplets assemble_mass(const AssemblyInput& in, double rho) {
-  const int D = in.dim, N = in.order + 1, Q = N;
-  const int ND = D == 3 ? N * N * N : N * N, QD = ND;
-  const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N
-  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
+  const int D = in.dim, N = in.order + 1;
+  const int ND = D == 3 ? N * N * N : N * N, QD = ND;  // Q = N points per direction
+  const fem::GaussTables tables = fem::gauss_tables(N);
   const std::int64_t ne = static_cast<std::int64_t>(in.element_nodes.size()) / ND;
   Triplets t;
   t.n = static_cast<std::int64_t>(in.constrained.size());
-  std::vector<double> phi(static_cast<std::size_t>(ND)), Me(static_cast<std::size_t>(ND) * ND);
+  std::vector<double> phi(static_cast<std::size_t>(ND)), grad(static_cast<std::size_t>(ND) * D),
+      Me(static_cast<std::size_t>(ND) * ND);
   for (std::int64_t e = 0; e < ne; ++e) {
     const std::int64_t* en = &in.element_nodes[static_cast<std::size_t>(e) * ND];
     std::fill(Me.begin(), Me.end(), 0.0);
     for (int q = 0; q < QD; ++q) {
-      const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
-      double w = rho, J[3][3] = {};
-      for (int d = 0; d < D; ++d) w *= wq[qi[d]];
-      for (int a = 0; a < ND; ++a) {
-        const int ai[3] = {a % N, (a / N) % N, a / (N * N)};
-        double v = 1.0;
-        for (int d = 0; d < D; ++d) v *= L[static_cast<std::size_t>(qi[d]) * N + ai[d]];
-        phi[a] = v;
-        for (int r = 0; r < D; ++r) {
-          double g = 1.0;
-          for (int d = 0; d < D; ++d) g *= (d == r ? dL : L)[static_cast<std::size_t>(qi[d]) * N + ai[d]];
-          for (int c = 0; c < D; ++c) J[c][r] += in.coordinates[static_cast<std::size_t>(en[a]) * D + c] * g;
-        }
-      }
-      const double det = D == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
-                                : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-                                      J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                                      J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+      double w;
+      const double det = fem::tensor_point(tables, D, q, en, in.coordinates, phi.data(), grad.data(), w);
       for (int a = 0; a < ND; ++a)
-        for (int b = 0; b < ND; ++b) Me[static_cast<std::size_t>(a) * ND + b] += w * det * phi[a] * phi[b];
+        for (int b = 0; b < ND; ++b) Me[static_cast<std::size_t>(a) * ND + b] += rho * w * det * phi[a] * phi[b];
     }
     for (int a = 0; a < ND; ++a)
       for (int c = 0; c < D; ++c) {

@@ -125,7 +125,6 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
   if (D != 2 && D != 3) throw std::invalid_argument("assemble_piezo: dimension " + std::to_string(D));
   const int ND = D == 3 ? N * N * N : N * N, QD = D == 3 ? Q * Q * Q : Q * Q, S = D == 3 ? 6 : 3;
   const fem::GaussTables tables = fem::gauss_tables(N);  // Q = N
-  const std::vector<double>&wq = tables.weights, &L = tables.value, &dL = tables.derivative;
   const std::int64_t ne = static_cast<std::int64_t>(in.element_law.size());
   if (static_cast<std::int64_t>(in.element_nodes.size()) != ne * ND)
     throw std::invalid_argument("assemble_piezo: element table and law list disagree");
@@ -155,47 +154,10 @@ inline PiezoMatrices assemble_piezo(const PiezoAssemblyInput& in) {
     std::fill(Ke.begin(), Ke.end(), 0.0);
     std::fill(Me.begin(), Me.end(), 0.0);
     for (int q = 0; q < QD; ++q) {
-      const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
-      double w = wq[qi[0]] * wq[qi[1]];
-      if (D == 3) w *= wq[qi[2]];
-      double J[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-      for (int a = 0; a < ND; ++a) {
-        const int ai[3] = {a % N, (a / N) % N, a / (N * N)};
-        double v = 1.0;
-        for (int d = 0; d < D; ++d) v *= L[static_cast<std::size_t>(qi[d]) * N + ai[d]];
-        val[a] = v;
-        for (int r = 0; r < D; ++r) {
-          double g = 1.0;
-          for (int d = 0; d < D; ++d)
-            g *= d == r ? dL[static_cast<std::size_t>(qi[d]) * N + ai[d]] : L[static_cast<std::size_t>(qi[d]) * N + ai[d]];
-          grad[static_cast<std::size_t>(a) * D + r] = g;
-          for (int c = 0; c < D; ++c) J[c][r] += in.coordinates[static_cast<std::size_t>(D * en[a] + c)] * g;
-        }
-      }
-      double det, Ji[3][3];
-      if (D == 2) {
-        det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-        Ji[0][0] = J[1][1] / det;
-        Ji[0][1] = -J[0][1] / det;
-        Ji[1][0] = -J[1][0] / det;
-        Ji[1][1] = J[0][0] / det;
-      } else {
-        det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-              J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-            Ji[i][j] = (J[r0][c0] * J[r1][c1] - J[r0][c1] * J[r1][c0]) / det;
-          }
-      }
+      double w;
+      const double det = fem::tensor_point(tables, D, q, en, in.coordinates, val.data(), grad.data(), w);
       if (!(det > 0.0))
         throw std::invalid_argument("assemble_piezo: element " + std::to_string(e) + " is inverted (det J <= 0)");
-      for (int a = 0; a < ND; ++a) {  // physical gradients, in place
-        double g[3] = {0, 0, 0};
-        for (int j = 0; j < D; ++j)
-          for (int r = 0; r < D; ++r) g[j] += grad[static_cast<std::size_t>(a) * D + r] * Ji[r][j];
-        for (int j = 0; j < D; ++j) grad[static_cast<std::size_t>(a) * D + j] = g[j];
-      }
       // strain-displacement: B[s][(a, c)] (Voigt of the element, engineering shears)
       std::fill(B.begin(), B.end(), 0.0);
       auto b = [&](int s, int a, int c) -> double& { return B[(static_cast<std::size_t>(s) * ND + a) * D + c]; };
