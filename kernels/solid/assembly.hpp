@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fem/basis.hpp"
+#include "fem/point_basis.hpp"
 #include "fem/csr.hpp"
 #include "materials/voigt.hpp"
 
