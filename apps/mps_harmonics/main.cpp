@@ -70,7 +70,9 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
       hooks.snapshot_every = scene.snapshot_every;
       hooks.snapshot = [&model, &snapshots, dt = c.dt](std::int64_t step) {
         const auto h = model.host_fields();
-        snapshots.add(step, static_cast<double>(step) * dt, {{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}});
+        // a named Fields: nvcc 11.8 cannot parse the nested braces in the call inside this init-capture lambda
+        const pm::io::Fields fields{{"displacement", 2, h.u}, {"velocity", 2, h.v}, {"volumetric_strain", 1, h.e}};
+        snapshots.add(step, static_cast<double>(step) * dt, fields);
       };
     }
     return hooks;
