@@ -5,6 +5,7 @@
 //   polymech --scene scenes/pd/penetration_303.toml --help    (the help of the app that runs it)
 //   polymech --list
 //   polymech --version
+//   polymech plan --scene FILE --target-error E [--quantity KEY] [--run]   (apps/polymech/plan.cpp, issue 38)
 // The app checks the options; its first line on stderr is then the notice "[polymech] SCENE -> APP"
 // (POLYMECH_DISPATCH_NOTICE, apps/common/cli.hpp), or its one-line error.
 #include <unistd.h>
@@ -17,11 +18,14 @@
 #include <vector>
 
 #include "apps/common/app.hpp"
+#include "apps/polymech/plan.hpp"
 #include "io/registry.hpp"
 
 namespace pm = polymech;
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "plan")
+    return pm::apps::plan_main(argc - 1, argv + 1, std::filesystem::path(argv[0]).parent_path());
   std::string scene;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
@@ -32,7 +36,9 @@ int main(int argc, char** argv) {
     const std::string a = argv[k];
     // with a scene, --help is the help of the app that runs it (issue 33 item 10): handed on below
     if (a == "--list" || (scene.empty() && (a == "--help" || a == "-h"))) {
-      std::printf("polymech --scene FILE [options of the app that runs it]\nscene kinds:\n");
+      std::printf("polymech --scene FILE [options of the app that runs it]\n"
+                  "polymech plan --scene FILE --target-error E [--quantity KEY] [--run]   (polymech plan --help)\n"
+                  "scene kinds:\n");
       for (const auto& kind : pm::io::scene_kinds()) {
         std::string apps;
         for (const auto& app : kind.apps) apps += (apps.empty() ? "" : ", ") + app;

@@ -1,0 +1,594 @@
+#include "io/plan.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "io/helmholtz_scene.hpp"
+#include "io/mps_elastic_scene.hpp"
+#include "io/nosb_pd_scene.hpp"
+#include "io/scene.hpp"
+
+namespace polymech::io::plan {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------- CSV
+
+int Table::column(const std::string& name) const {
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    if (columns[k] == name) return static_cast<int>(k);
+  return -1;
+}
+
+Table read_csv(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw PlanError(file.string() + ": cannot read the sweep data");
+  Table t;
+  std::string line;
+  auto split = [](const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream ss(s);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) out.push_back(cell);
+    return out;
+  };
+  if (!std::getline(in, line)) throw PlanError(file.string() + ": empty");
+  t.columns = split(line);
+  int n = 1;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty()) continue;
+    const auto cells = split(line);
+    if (cells.size() != t.columns.size())
+      throw PlanError(file.string() + ":" + std::to_string(n) + ": " + std::to_string(cells.size()) + " cells, the header has " +
+                      std::to_string(t.columns.size()));
+    std::vector<double> row;
+    for (const auto& c : cells) {
+      char* end = nullptr;
+      const double v = std::strtod(c.c_str(), &end);
+      row.push_back(end == c.c_str() ? std::nan("") : v);
+    }
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------- fits
+
+PowerLaw fit_power_law(const std::vector<double>& h, const std::vector<double>& e) {
+  std::vector<double> x, y;
+  for (std::size_t k = 0; k < h.size() && k < e.size(); ++k)
+    if (h[k] > 0 && e[k] > 0 && std::isfinite(h[k]) && std::isfinite(e[k])) {
+      x.push_back(std::log(h[k]));
+      y.push_back(std::log(e[k]));
+    }
+  PowerLaw p;
+  p.points = static_cast<int>(x.size());
+  if (x.empty()) return p;
+  double mx = 0, my = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) mx += x[k], my += y[k];
+  mx /= x.size();
+  my /= y.size();
+  double sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) sxx += (x[k] - mx) * (x[k] - mx), sxy += (x[k] - mx) * (y[k] - my);
+  p.rate = sxx > 0 ? sxy / sxx : 0.0;
+  p.constant = std::exp(my - p.rate * mx);
+  double r2 = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const double r = y[k] - (my + p.rate * (x[k] - mx));
+    r2 += r * r;
+  }
+  p.log_rms = std::sqrt(r2 / x.size());
+  return p;
+}
+
+namespace {
+
+bool same_group(const SweepPoint& p, const GroupModel& g) { return p.order == g.order && p.single == g.single; }
+
+// The points of one group, coarsest first.
+std::vector<SweepPoint> group_points(const std::vector<SweepPoint>& points, double order, bool single) {
+  std::vector<SweepPoint> g;
+  for (const auto& p : points)
+    if (p.order == order && p.single == single && std::isfinite(p.error)) g.push_back(p);
+  std::sort(g.begin(), g.end(), [](const SweepPoint& a, const SweepPoint& b) { return a.h > b.h; });
+  return g;
+}
+
+// Index of the smallest error (the last one on ties: the finest run that reached it).
+std::size_t best_index(const std::vector<SweepPoint>& g) {
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < g.size(); ++i)
+    if (g[i].error <= g[k].error) k = i;
+  return k;
+}
+
+// A rate below this is no convergence over the sweep's range.
+constexpr double min_rate = 0.2;
+
+}  // namespace
+
+std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points) {
+  std::vector<GroupModel> groups;
+  for (const auto& p : points) {
+    bool seen = false;
+    for (const auto& g : groups) seen = seen || same_group(p, g);
+    if (seen) continue;
+    GroupModel g;
+    g.order = p.order;
+    g.single = p.single;
+    const auto pts = group_points(points, p.order, p.single);
+    g.points = static_cast<int>(pts.size());
+    if (pts.empty()) continue;
+    const std::size_t k = best_index(pts);
+    // the converging part: the coarsest run to the one of least error; finer runs that do not improve on
+    // it mark a floor (float round-off, a solver tolerance, a discretisation limit)
+    std::vector<double> h, e;
+    for (std::size_t i = 0; i <= k; ++i) h.push_back(pts[i].h), e.push_back(pts[i].error);
+    g.fit = fit_power_law(h, e);
+    g.converges = k >= 1 && g.fit.rate > min_rate;
+    if (g.converges) {
+      g.floor = k + 1 < pts.size() ? pts[k].error : 0.0;
+      for (std::size_t i = 0; i <= k; ++i) g.bound = std::max(g.bound, pts[i].error / std::pow(pts[i].h, g.fit.rate));
+    } else {
+      g.fit = fit_power_law([&] { std::vector<double> v; for (auto& q : pts) v.push_back(q.h); return v; }(),
+                            [&] { std::vector<double> v; for (auto& q : pts) v.push_back(q.error); return v; }());
+    }
+    // time: the loader's estimate refreshed by the measured CPU times, t = a * estimate^b
+    std::vector<double> est, sec;
+    for (const auto& q : pts)
+      if (q.seconds > 0 && q.estimate > 0) est.push_back(q.estimate), sec.push_back(q.seconds);
+    if (est.size() >= 2) {
+      const PowerLaw t = fit_power_law(est, sec);
+      g.time_factor = t.constant;
+      g.time_exponent = t.rate;
+      g.time_log_rms = t.log_rms;
+    } else if (est.size() == 1) {
+      g.time_factor = sec[0] / est[0];
+    }
+    groups.push_back(g);
+  }
+  std::sort(groups.begin(), groups.end(),
+            [](const GroupModel& a, const GroupModel& b) { return a.single != b.single ? !a.single : a.order < b.order; });
+  return groups;
+}
+
+std::vector<Candidate> predict(const std::vector<SweepPoint>& points, const std::vector<GroupModel>& groups) {
+  std::vector<Candidate> out;
+  for (const auto& g : groups) {
+    const auto pts = group_points(points, g.order, g.single);
+    if (pts.empty()) continue;
+    const std::size_t k = best_index(pts);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      Candidate c;
+      c.point = pts[i];
+      if (g.converges) {
+        c.predicted_error = std::max(g.bound * std::pow(pts[i].h, g.fit.rate), g.floor);
+        c.beyond_floor = i > k;
+      } else {
+        // no convergence: at most the largest error measured at this resolution or finer
+        double env = 0;
+        for (std::size_t j = i; j < pts.size(); ++j) env = std::max(env, pts[j].error);
+        c.predicted_error = env;
+      }
+      c.predicted_seconds =
+          pts[i].estimate > 0 ? g.time_factor * std::pow(pts[i].estimate, g.time_exponent) : pts[i].seconds;
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+Plan choose(const Model& model, double target) {
+  Plan plan;
+  std::vector<Candidate> usable;
+  for (const auto& c : model.candidates)
+    if (!c.beyond_floor) usable.push_back(c);
+  plan.best_error = INFINITY;
+  const Candidate* best = nullptr;
+  const Candidate* pick = nullptr;
+  for (const auto& c : usable) {
+    if (!best || c.predicted_error < best->predicted_error ||
+        (c.predicted_error == best->predicted_error && c.predicted_seconds < best->predicted_seconds))
+      best = &c;
+    if (c.predicted_error <= target && (!pick || c.predicted_seconds < pick->predicted_seconds)) pick = &c;
+  }
+  if (best) plan.best_error = best->predicted_error;
+  // the Pareto front: no other candidate is both as accurate and as fast (and better in one)
+  for (const auto& c : usable) {
+    bool dominated = false;
+    for (const auto& d : usable)
+      dominated = dominated || (d.predicted_error <= c.predicted_error && d.predicted_seconds <= c.predicted_seconds &&
+                                (d.predicted_error < c.predicted_error || d.predicted_seconds < c.predicted_seconds));
+    if (!dominated) plan.pareto.push_back(c);
+  }
+  std::sort(plan.pareto.begin(), plan.pareto.end(),
+            [](const Candidate& a, const Candidate& b) { return a.predicted_seconds < b.predicted_seconds; });
+  if (pick) {
+    plan.choice = *pick;
+    return plan;
+  }
+  plan.refused = true;
+  std::ostringstream why;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.3g", target);
+  why << "target " << buf << " is below what the sweep supports for " << model.quantity_text << ": ";
+  if (best) {
+    std::snprintf(buf, sizeof buf, "%.3g", plan.best_error);
+    why << "the best reachable predicted error is " << buf << " (" << describe_candidate(model, *best) << ")";
+  } else {
+    why << "no usable sweep point";
+  }
+  std::vector<std::string> limits;
+  for (const auto& g : model.groups) {
+    std::string name = (g.single ? "float" : "double");
+    if (!model.order_name.empty()) {
+      std::snprintf(buf, sizeof buf, "%s %g ", model.order_name.c_str(), g.order);
+      name = buf + name;
+    }
+    if (!g.converges) {
+      limits.push_back(name + ": the error does not fall with the resolution over the sweep");
+    } else if (g.floor > 0) {
+      std::snprintf(buf, sizeof buf, "%.3g", g.floor);
+      limits.push_back(name + ": stops converging at " + buf + (g.single ? " (float round-off)" : ""));
+    }
+  }
+  if (!limits.empty()) {
+    why << "; ";
+    for (std::size_t k = 0; k < limits.size(); ++k) why << (k ? "; " : "") << limits[k];
+  }
+  why << "; finer runs than the sweep's finest are not predicted (no data)";
+  plan.reason = why.str();
+  return plan;
+}
+
+// ---------------------------------------------------------------------------------------------- cases
+
+namespace {
+
+struct QuantitySpec {
+  std::string key, column, summary_key, text;
+};
+
+struct Level {
+  double resolution, order;
+  bool single;
+  std::int64_t steps;
+};
+
+// What the plan needs of one case with a committed sweep.
+struct Case {
+  std::string name, kind, app;
+  std::vector<std::string> scenes;  // scene file stems the sweep ran
+  std::string csv, sweep_command;
+  std::string resolution_column, h_column, order_column, precision_column, time_column, steps_column;
+  std::string resolution_name, order_name;
+  std::vector<QuantitySpec> quantities;
+  // the loader's cost estimate of one run, one thread [s]
+  std::function<double(const fs::path& scene, const Level&)> estimate;
+  // sets a parsed scene to the level; returns the accuracy preset to run it with
+  std::function<std::string(toml::table&, const Level&)> edit;
+};
+
+double one_thread(const CostEstimate& c) { return c.seconds * c.rate_threads; }
+
+std::string precision(bool single) { return single ? "float" : "double"; }
+
+void set_accuracy(toml::table& t, const std::string& preset, double factor) {
+  if (!t["accuracy"].is_table()) t.insert_or_assign("accuracy", toml::table{});
+  t["accuracy"].as_table()->insert_or_assign(preset, factor);
+}
+
+const std::vector<Case>& cases() {
+  static const std::vector<Case> c = {
+      {"MPS point source",
+       "mps_elastic",
+       "mps_point_source",
+       {"point_source"},
+       "docs/figures/mps/mps_point_source.csv",
+       "build/release/bench/sweep_mps_point_source --out docs/figures/mps",
+       "coarsening",
+       "spacing",
+       "",
+       "is_float",
+       "cpu_seconds",
+       "steps",
+       "coarsening",
+       "",
+       {{"cp", "cp_rel_error", "cp_relative_error", "P-wave speed (relative error)"},
+        {"cs", "cs_rel_error", "cs_relative_error", "S-wave speed (relative error)"}},
+       [](const fs::path& f, const Level& l) {
+         MpsSceneOptions o;
+         o.coarsening = l.resolution;
+         o.precision = precision(l.single);
+         o.steps = l.steps;
+         return one_thread(load_mps_elastic_scene(f, o).cost);
+       },
+       [](toml::table& t, const Level& l) {
+         set_accuracy(t, "draft", l.resolution);
+         return std::string("draft");
+       }},
+      {"Helmholtz FEM",
+       "helmholtz",
+       "helmholtz",
+       {"cube", "duct", "duct_2khz"},
+       "docs/figures/helmholtz/helmholtz_{stem}.csv",
+       "build/release/bench/sweep_helmholtz --cases {stem} --out docs/figures/helmholtz",
+       "elements_x",
+       "h",
+       "order",
+       "is_float",
+       "cpu_seconds",
+       "",
+       "elements along x",
+       "order",
+       {{"l2", "l2_error", "l2_error", "L2 error of the pressure (eq. (28), relative)"}},
+       [](const fs::path& f, const Level& l) {
+         const auto base = load_helmholtz_scene(f, {"paper", "", 0, 1.0});
+         HelmholtzSceneOptions o;
+         o.accuracy = "paper";
+         o.precision = precision(l.single);
+         o.order = static_cast<int>(l.order);
+         const double n = l.resolution;
+         for (int d = 0; d < 3; ++d)
+           o.elements[d] = std::max(1, static_cast<int>(std::lround(n * base.box_elements[d] / base.box_elements[0])));
+         return one_thread(load_helmholtz_scene(f, o).cost);
+       },
+       [](toml::table& t, const Level& l) {
+         t["discretization"].as_table()->insert_or_assign("order", static_cast<int64_t>(l.order));
+         auto* mesh = t["mesh"].as_table();
+         auto* e = (*mesh)["elements"].as_array();
+         std::vector<double> base;
+         for (auto& v : *e) base.push_back(v.value<double>().value_or(1.0));
+         toml::array ne;
+         for (double b : base) ne.push_back(static_cast<int64_t>(std::max(1L, std::lround(l.resolution * b / base[0]))));
+         mesh->insert_or_assign("elements", ne);
+         // the sweep's float runs stop at 1e-6 (float cannot reach the paper's 1e-10; sweep_helmholtz)
+         if (l.single) t["solver"].as_table()->insert_or_assign("tolerance", 1e-6);
+         set_accuracy(t, "paper", 1.0);
+         return std::string("paper");
+       }},
+      {"PD tension",
+       "nosb_pd",
+       "pd_tension",
+       {"tension_lattice", "tension_conforming", "tension_jittered", "tension_jittered_hourglass"},
+       "docs/figures/pd/{stem}.csv",
+       "build/release/bench/sweep_pd_tension --scene scenes/pd/{stem}.toml --name {stem} --out docs/figures/pd",
+       "coarsening",
+       "spacing",
+       "horizon_ratio",
+       "is_float",
+       "wall_seconds",
+       "",
+       "coarsening",
+       "horizon ratio",
+       {{"modulus", "modulus_relative_error", "relative_error", "Young's modulus (relative error)"}},
+       [](const fs::path& f, const Level& l) {
+         NosbPdSceneOptions o;
+         o.coarsening = l.resolution;
+         o.precision = precision(l.single);
+         o.horizon_ratio = l.order;
+         return one_thread(load_nosb_pd_scene(f, o).cost);
+       },
+       [](toml::table& t, const Level& l) {
+         t["discretization"].as_table()->insert_or_assign("horizon_ratio", l.order);
+         set_accuracy(t, "draft", l.resolution);
+         return std::string("draft");
+       }},
+  };
+  return c;
+}
+
+std::string expand(std::string s, const std::string& stem) {
+  for (auto p = s.find("{stem}"); p != std::string::npos; p = s.find("{stem}")) s.replace(p, 6, stem);
+  return s;
+}
+
+std::string scene_kind(const fs::path& scene) {
+  const Scene s = Scene::load(scene);
+  return s.root().table("model").string("kind");
+}
+
+const Case* find_case(const std::string& kind, const std::string& stem) {
+  for (const auto& c : cases())
+    if (c.kind == kind && std::find(c.scenes.begin(), c.scenes.end(), stem) != c.scenes.end()) return &c;
+  return nullptr;
+}
+
+Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, const fs::path& root, const std::string& quantity) {
+  Model m;
+  m.method = cs.name;
+  m.app = cs.app;
+  const QuantitySpec* q = nullptr;
+  std::string keys;
+  for (const auto& qs : cs.quantities) {
+    keys += (keys.empty() ? "" : ", ") + qs.key;
+    if (qs.key == quantity || (quantity.empty() && !q)) q = &qs;
+  }
+  if (!q) throw PlanError("--quantity " + quantity + ": not a quantity of " + cs.name + "; allowed: " + keys);
+  m.quantity = q->key;
+  m.quantity_text = q->text;
+  m.summary_key = q->summary_key;
+  m.resolution_name = cs.resolution_name;
+  m.order_name = cs.order_name;
+  m.csv = expand(cs.csv, stem);
+  m.sweep_command = expand(cs.sweep_command, stem);
+  const Table t = read_csv(root / m.csv);
+  auto col = [&](const std::string& name) {
+    if (name.empty()) return -1;
+    const int k = t.column(name);
+    if (k < 0) throw PlanError((root / m.csv).string() + ": no column '" + name + "'");
+    return k;
+  };
+  const int res = col(cs.resolution_column), h = col(cs.h_column), ord = col(cs.order_column),
+            prec = col(cs.precision_column), tm = col(cs.time_column), st = col(cs.steps_column), err = col(q->column);
+  const int status = t.column("status");  // Helmholtz: 0 = converged
+  std::vector<SweepPoint> pts;
+  for (const auto& r : t.rows) {
+    if (status >= 0 && r[status] != 0) continue;
+    SweepPoint p;
+    p.resolution = r[res];
+    p.h = r[h];
+    p.order = ord >= 0 ? r[ord] : 0.0;
+    p.single = prec >= 0 && r[prec] != 0;
+    p.error = std::abs(r[err]);
+    p.seconds = r[tm];
+    p.steps = st >= 0 ? static_cast<std::int64_t>(r[st]) : 0;
+    if (!std::isfinite(p.error)) continue;
+    p.estimate = cs.estimate(scene, {p.resolution, p.order, p.single, p.steps});
+    pts.push_back(p);
+  }
+  if (pts.empty()) throw PlanError((root / m.csv).string() + ": no sweep point with a finite " + q->column);
+  m.groups = fit_groups(pts);
+  m.candidates = predict(pts, m.groups);
+  return m;
+}
+
+std::string number(double x) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+}  // namespace
+
+fs::path source_dir(const fs::path& scene) {
+  if (const char* s = std::getenv("POLYMECH_SOURCE_DIR"); s && *s && fs::exists(fs::path(s) / "docs" / "figures")) return s;
+  for (fs::path base : {fs::absolute(scene).parent_path(), fs::current_path()})
+    for (fs::path p = base; !p.empty(); p = p.parent_path()) {
+      if (fs::exists(p / "docs" / "figures")) return p;
+      if (p == p.parent_path()) break;
+    }
+  throw PlanError("cannot find the sweep data (docs/figures) above " + scene.string() +
+                  " or the working folder; set POLYMECH_SOURCE_DIR to the source folder");
+}
+
+std::vector<std::string> planned_cases() {
+  std::vector<std::string> out;
+  for (const auto& c : cases()) {
+    std::string s = c.name + " (kind " + c.kind + ", app " + c.app + "; scenes:";
+    for (const auto& n : c.scenes) s += " " + n;
+    out.push_back(s + ")");
+  }
+  return out;
+}
+
+Model build_model(const fs::path& scene, const std::string& quantity) {
+  const std::string kind = scene_kind(scene);
+  const std::string stem = scene.stem().string();
+  const Case* cs = find_case(kind, stem);
+  if (!cs) {
+    std::string known;
+    for (const auto& c : planned_cases()) known += "\n  " + c;
+    throw PlanError(scene.string() + ": no accuracy-cost sweep data for this scene (kind '" + kind +
+                    "'), so no error model to plan from; scenes with sweep data:" + known);
+  }
+  return model_of(*cs, scene, stem, source_dir(scene), quantity);
+}
+
+std::string fit_report(const fs::path& root) {
+  std::ostringstream s;
+  s << "| case | quantity | " << "order | precision | points | rate | constant | log rms | bound | floor | time factor | "
+       "time exponent | time log rms |\n";
+  s << "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const auto& cs : cases())
+    for (const auto& stem : cs.scenes) {
+      const fs::path scene = root / "scenes" / (cs.kind == "nosb_pd" ? "pd" : cs.kind == "mps_elastic" ? "mps" : cs.kind) /
+                             (stem + ".toml");
+      if (!fs::exists(root / expand(cs.csv, stem)) || !fs::exists(scene)) continue;
+      for (const auto& q : cs.quantities) {
+        const Model m = model_of(cs, scene, stem, root, q.key);
+        for (const auto& g : m.groups)
+          s << "| " << cs.name << " `" << stem << "` | " << q.key << " | " << (m.order_name.empty() ? "-" : number(g.order))
+            << " | " << (g.single ? "float" : "double") << " | " << g.points << " | "
+            << (g.converges ? number(g.fit.rate) : "no convergence") << " | " << number(g.fit.constant) << " | "
+            << number(g.fit.log_rms) << " | " << (g.converges ? number(g.bound) : "envelope") << " | "
+            << (g.floor > 0 ? number(g.floor) : "-") << " | " << number(g.time_factor) << " | " << number(g.time_exponent) << " | " << number(g.time_log_rms)
+            << " |\n";
+      }
+    }
+  return s.str();
+}
+
+std::vector<std::string> run_arguments(const Model& model, const fs::path& scene, const Candidate& c, const fs::path& out,
+                                       int threads) {
+  const Case* cs = nullptr;
+  for (const auto& k : cases())
+    if (k.name == model.method) cs = &k;
+  if (!cs) throw PlanError("no case " + model.method);
+  toml::table t;
+  try {
+    t = toml::parse_file(scene.string());
+  } catch (const toml::parse_error& e) {
+    throw PlanError(scene.string() + ": " + std::string(e.description()));
+  }
+  const Level l{c.point.resolution, c.point.order, c.point.single, c.point.steps};
+  const std::string preset = cs->edit(t, l);
+  fs::create_directories(out);
+  const fs::path planned = out / "plan_scene.toml";
+  {
+    std::ofstream f(planned);
+    f << "# " << scene.string() << " as planned by `polymech plan` (" << describe_candidate(model, c) << ")\n" << t << "\n";
+    if (!f) throw PlanError(planned.string() + ": cannot write");
+  }
+  std::vector<std::string> a = {"--scene", planned.string(), "--out",        out.string(),
+                                "--accuracy", preset,       "--precision", precision(c.point.single),
+                                "--threads", std::to_string(threads), "--quiet"};
+  if (c.point.steps > 0) a.insert(a.end(), {"--steps", std::to_string(c.point.steps)});
+  return a;
+}
+
+std::string describe_candidate(const Model& model, const Candidate& c) {
+  std::ostringstream s;
+  s << model.resolution_name << " " << number(c.point.resolution);
+  if (!model.order_name.empty()) s << ", " << model.order_name << " " << number(c.point.order);
+  s << ", " << precision(c.point.single);
+  if (c.point.steps > 0) s << ", " << c.point.steps << " steps";
+  return s.str();
+}
+
+std::string describe_plan(const Model& model, const Plan& plan, double target) {
+  std::ostringstream s;
+  s << "[plan] " << model.method << ": " << model.quantity_text << ", target " << number(target) << "\n";
+  s << "  error model: fitted to " << model.csv.string() << " (" << model.sweep_command << ")\n";
+  s << "  time model: a * (the scene loader's cost estimate)^b fitted to the sweep's measured CPU times, one thread\n";
+  if (!plan.refused) {
+    s << "  choice: " << describe_candidate(model, plan.choice) << "\n";
+    s << "  predicted error " << number(plan.choice.predicted_error) << " (measured in the sweep "
+      << number(plan.choice.point.error) << "), predicted time " << number(plan.choice.predicted_seconds)
+      << " s (measured in the sweep " << number(plan.choice.point.seconds) << " s)\n";
+  } else {
+    s << "  refused: " << plan.reason << "\n";
+  }
+  s << "  Pareto front (" << plan.pareto.size()
+    << " points; predicted error against predicted time; * chosen, x misses the target; nearest 9 shown):\n";
+  s << "    " << (model.order_name.empty() ? "" : model.order_name + " / ") << "precision / " << model.resolution_name
+    << " : predicted error, predicted s\n";
+  // at most four points on either side of the choice (or of the best reachable error when refused)
+  std::size_t centre = plan.pareto.empty() ? 0 : plan.pareto.size() - 1;
+  for (std::size_t k = 0; k < plan.pareto.size(); ++k) {
+    const auto& c = plan.pareto[k];
+    if (!plan.refused && c.point.resolution == plan.choice.point.resolution && c.point.order == plan.choice.point.order &&
+        c.point.single == plan.choice.point.single)
+      centre = k;
+  }
+  for (std::size_t k = 0; k < plan.pareto.size(); ++k) {
+    if (k + 4 < centre || k > centre + 4) continue;
+    const auto& c = plan.pareto[k];
+    const bool chosen = !plan.refused && c.point.resolution == plan.choice.point.resolution &&
+                        c.point.order == plan.choice.point.order && c.point.single == plan.choice.point.single;
+    s << "    " << (chosen ? "* " : c.predicted_error > target ? "x " : "  ") << describe_candidate(model, c) << " : "
+      << number(c.predicted_error) << ", " << number(c.predicted_seconds) << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace polymech::io::plan
