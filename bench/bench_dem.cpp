@@ -9,9 +9,16 @@
 // kernels and the carried springs, the planes' Verlet mask), `share_contact_forces`, `share_integrator`;
 // `build_us_per_sphere`: one list build (the first step's broad-phase kernels) per sphere. CPU time (the
 // machine is shared): run with OMP_NUM_THREADS=1.
+// BM_DemPour/STEPS: the pour of scenes/dem/sphere_pour.toml (2 000 spheres, R = 5-7 mm, a 12 cm bin of five
+// planes; the case bench/peers/liggghts/run_pour.sh runs next to LIGGGHTS) for STEPS steps from its start,
+// one iteration: sphere-steps/s of the loop and each kernel group's share of the kernels' time over the
+// whole run (`share_*`; the timing callbacks cost about 1 % of the step).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -124,10 +131,71 @@ void dem_step(benchmark::State& state, bool clumps) {
   }
 }
 
+// The pour of scenes/dem/sphere_pour.toml (io/dem_pour_scene.cpp's defaults: dt = 0.5 x the limit).
+dm::Config sphere_pour() {
+  dm::Config base;
+  base.particle = {5e7, 0.3, 2650};
+  base.wall = {5e7, 0.3, 2650};
+  base.restitution = 0.4;
+  base.friction = 0.5;
+  base.gravity = {0, 0, -9.81};
+  base.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
+  dm::PourSpec p;
+  p.bin = {0.12, 0.12, 0.12};
+  p.count = 2000;
+  p.shapes = {"sphere"};
+  p.radius_min = 0.005;
+  p.radius_max = 0.007;
+  p.seed = 1;
+  return dm::pour_config(base, p);
+}
+
+void BM_DemPour(benchmark::State& state) {
+  const auto steps = state.range(0);
+  const auto config = sphere_pour();
+  std::map<std::string, double> seconds;
+  double spheres = 0, builds = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    dm::Dem<double> m(config);
+    spheres = double(m.sphere_count());
+    state.ResumeTiming();
+    pm::bench::KernelTimes times;
+    for (std::int64_t s = 0; s < steps; ++s) m.step();
+    Kokkos::fence();
+    for (const auto& [name, t] : times.by_name()) seconds[name] += t;
+    builds = m.sphere_list_builds();
+  }
+  double all = 0;
+  for (const auto& [name, t] : seconds) all += t;
+  if (std::getenv("POLYMECH_BENCH_KERNELS"))  // every kernel's share, to stderr
+    for (const auto& [name, t] : seconds) std::fprintf(stderr, "%6.2f %%  %.3f s  %s\n", 100 * t / all, t, name.c_str());
+  auto share = [&](const std::vector<std::string>& parts) {
+    double t = 0;
+    for (const auto& [name, sec] : seconds)
+      for (const auto& q : parts)
+        if (name.find(q) != std::string::npos) {
+          t += sec;
+          break;
+        }
+    return t / all;
+  };
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * spheres * double(steps)));
+  state.counters["spheres"] = spheres;
+  state.counters["list_builds"] = builds;
+  state.counters["share_sphere_sphere"] = share({"polymech::dem::sphere_sphere"});
+  state.counters["share_sphere_plane"] = share({"polymech::dem::sphere_plane"});
+  state.counters["share_list_build"] = share({"polymech::neighbors::", "polymech::contact::carry_history", "polymech::dem::near_planes"}) -
+                                       share({"polymech::neighbors::max_displacement"});
+  state.counters["share_displacement_check"] = share({"polymech::neighbors::max_displacement"});
+  state.counters["share_integrator"] = share(kIntegrator);
+}
+
 void BM_DemStepSpheres(benchmark::State& state) { dem_step(state, false); }
 void BM_DemStepCubeClumps(benchmark::State& state) { dem_step(state, true); }
 
 }  // namespace
 
 BENCHMARK(BM_DemStepSpheres)->Arg(10)->Arg(22)->Arg(40)->Arg(47)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DemPour)->Arg(30000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DemStepCubeClumps)->Arg(10)->Arg(20)->Arg(47)->Unit(benchmark::kMicrosecond);
