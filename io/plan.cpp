@@ -173,6 +173,7 @@ std::vector<Candidate> predict(const std::vector<SweepPoint>& points, const std:
       if (g.converges) {
         c.predicted_error = std::max(g.bound * std::pow(pts[i].h, g.fit.rate), g.floor);
         c.beyond_floor = i > k;
+        if (c.beyond_floor) c.predicted_error = std::max(c.predicted_error, pts[i].error);  // never chosen
       } else {
         // no convergence: at most the largest error measured at this resolution or finer
         double env = 0;
