@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <ctime>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -58,6 +59,9 @@ struct FlowConfig {
   int newton_max = 25;
   double newton_tol = 1e-10;  // converged when the update is below tol x max|U| (and the residual is checked)
   int picard_steps = 0;       // first iterations with the Oseen linearisation (a far initial guess)
+  // time steps: keep the first iteration's factorisation for the step's later iterations (the chord method),
+  // refactorising only when an update shrinks by less than 3x; the converged state is the same
+  bool chord = false;
 };
 
 struct NewtonReport {
@@ -69,6 +73,15 @@ struct NewtonReport {
 
 struct Forces {
   double drag = 0.0, lift = 0.0;
+};
+
+// Process CPU seconds spent in the parts of the solve (std::clock: one thread's time with OMP_NUM_THREADS=1).
+struct FlowTimings {
+  double element_kernel = 0.0;  // the Kokkos element pass (residual and Jacobian)
+  double scatter = 0.0;         // host copies and the scatter into the residual and the CSR values
+  double factor = 0.0;          // sparse LU factorisation
+  double solve = 0.0;           // the triangular solves
+  long assemblies = 0, factorizations = 0;
 };
 
 // A flow problem on the mesh, its discretisation and state.
@@ -107,6 +120,7 @@ class NavierStokes2D {
   std::vector<double>& state() { return u_host_; }
   std::int64_t pressure_dof_of_node(std::int64_t node) const { return vertex_[static_cast<std::size_t>(node)] < 0 ? -1 : 2 * nn_ + vertex_[static_cast<std::size_t>(node)]; }
   const Forces& forces() const { return forces_; }
+  const FlowTimings& timings() const { return timings_; }
   // The full residual (every DoF, Dirichlet ones included) at the last assembly.
   const std::vector<double>& residual() const { return r_full_; }
 
@@ -423,8 +437,17 @@ class NavierStokes2D {
     copy_to(U_, u_host_);
     if (ct == 0.0) Kokkos::deep_copy(Ustar_, 0.0);
     const ElementCoefficients co{cfg_.rho, cfg_.rho * cfg_.nu, ct};
+    const std::clock_t c0 = std::clock();
     element_residual_jacobian(in_, basis_, co, U_, Ustar_, W_, Re_, Ke_, jacobian, picard);
     Kokkos::fence();
+    const std::clock_t c1 = std::clock();
+    timings_.element_kernel += static_cast<double>(c1 - c0) / CLOCKS_PER_SEC;
+    ++timings_.assemblies;
+    struct AddOnExit {
+      FlowTimings& t;
+      std::clock_t c;
+      ~AddOnExit() { t.scatter += static_cast<double>(std::clock() - c) / CLOCKS_PER_SEC; }
+    } add_scatter{timings_, c1};
     auto Rh = Kokkos::create_mirror_view(Re_);
     Kokkos::deep_copy(Rh, Re_);
     r_full_.assign(static_cast<std::size_t>(ndof_), 0.0);
@@ -449,13 +472,15 @@ class NavierStokes2D {
   }
 
   NewtonReport newton(double ct, bool transient) {
-    (void)transient;
     NewtonReport rep;
     std::vector<double> rhs(static_cast<std::size_t>(nfree_));
+    double previous_update = 0.0;
     for (int it = 0;; ++it) {
       const bool last = it >= cfg_.newton_max;
       const bool converged = it > 0 && rep.update <= cfg_.newton_tol * std::max(1e-300, umax());
-      assemble(ct, !(converged || last), it < cfg_.picard_steps);
+      const bool refactor = !(transient && cfg_.chord) || it == 0 || (it >= 2 && rep.update > previous_update / 3.0);
+      previous_update = rep.update;
+      assemble(ct, !(converged || last) && refactor, it < cfg_.picard_steps);
       double rmax = 0.0;
       for (std::int64_t k = 0; k < ndof_; ++k) {
         const std::int64_t f = free_[static_cast<std::size_t>(k)];
@@ -471,8 +496,15 @@ class NavierStokes2D {
         return rep;
       }
       if (last) return rep;
-      lu_.factor(nfree_, rows_, cols_, values_);
+      const std::clock_t c0 = std::clock();
+      if (refactor) {
+        lu_.factor(nfree_, rows_, cols_, values_);
+        ++timings_.factorizations;
+      }
+      const std::clock_t c1 = std::clock();
       lu_.solve(rhs.data());
+      timings_.factor += static_cast<double>(c1 - c0) / CLOCKS_PER_SEC;
+      timings_.solve += static_cast<double>(std::clock() - c1) / CLOCKS_PER_SEC;
       double dmax = 0.0;
       for (std::int64_t k = 0; k < ndof_; ++k) {
         const std::int64_t f = free_[static_cast<std::size_t>(k)];
@@ -504,6 +536,7 @@ class NavierStokes2D {
   solvers::HostSparseLU lu_;
   std::vector<double> u_host_, u_prev_, u_prev2_;
   Forces forces_;
+  FlowTimings timings_;
   double time_ = 0.0, last_dt_ = 0.0;
   std::int64_t steps_ = 0;
 };
