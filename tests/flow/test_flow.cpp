@@ -49,7 +49,7 @@ TEST(Flow, PoiseuilleIsReproducedToRoundOff) {
       if (pd >= 0) ep = std::max(ep, std::abs(U[pd] - 8 * mu * Umax * (L - x) / (H * H)));
     }
     std::printf("Poiseuille, distortion %.1f: max nodal error u %.2e, p %.2e\n", distortion, eu, ep);
-    // measured (AMD EPYC Zen 3): u 5.6e-16 / 7.9e-16, p 5.3e-15 / 2.7e-15 (straight / distorted)
+    // measured (Intel Xeon, AVX-512, this machine): u 5.6e-16 / 7.9e-16, p 5.3e-15 / 2.7e-15 (straight / distorted)
     EXPECT_LT(eu, 1e-12 * Umax) << "distortion " << distortion;
     EXPECT_LT(ep, 1e-12 * 8 * mu * Umax * L / (H * H)) << "distortion " << distortion;
     EXPECT_LT(ns.divergence_l2(), 1e-12);
@@ -109,7 +109,7 @@ TEST(Flow, KovasznayConvergesAtTaylorHoodRates) {
                  rd = std::log2(e[i - 1].div / e[i].div);
     std::printf("Kovasznay: h / %d: |u - u_h| %.3e (rate %.2f), |p - p_h| %.3e (rate %.2f), |div u_h| %.3e (rate %.2f)\n",
                 1 << (i + 1), e[i].u, ru, e[i].p, rp, e[i].div, rd);
-    // measured (AMD EPYC Zen 3): see docs/VALIDATION.md
+    // measured (Intel Xeon, AVX-512, this machine): see docs/VALIDATION.md
     EXPECT_GT(ru, 2.7);
     EXPECT_GT(rp, 1.8);
     EXPECT_GT(rd, 1.7);
@@ -129,7 +129,7 @@ TEST(Flow, TurekHronCfd1CoarseMeshes) {
     const double ed = std::abs(ns.forces().drag / ref.drag - 1), el = std::abs(ns.forces().lift / ref.lift - 1);
     std::printf("CFD1 level %d: %lld unknowns, drag %.4f (%.3f %%), lift %.4f (%.3f %%)\n", level,
                 static_cast<long long>(ns.unknowns()), ns.forces().drag, 100 * ed, ns.forces().lift, 100 * el);
-    // measured (AMD EPYC Zen 3): level 0 drag -1.35 %, lift -1.92 %; level 1 -0.25 %, -0.47 %; level 2 -0.09 %,
+    // measured (Intel Xeon, AVX-512, this machine): level 0 drag -1.35 %, lift -1.92 %; level 1 -0.25 %, -0.47 %; level 2 -0.09 %,
     // -0.18 % (the reference's 4 digits, 14.29 and 1.119, are good to 0.04 % and 0.05 %). Asserted: the level's
     // error with a margin of about 1.5x, and its decrease.
     EXPECT_LT(ed, level == 0 ? 0.02 : 0.004);
