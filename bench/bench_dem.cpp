@@ -152,7 +152,8 @@ dm::Config sphere_pour() {
 
 void BM_DemPour(benchmark::State& state) {
   const auto steps = state.range(0);
-  const auto config = sphere_pour();
+  auto config = sphere_pour();
+  if (const char* skin = std::getenv("POLYMECH_BENCH_SKIN")) config.skin = std::atof(skin);  // default 0.2 r_min = 1 mm
   std::map<std::string, double> seconds;
   double spheres = 0, builds = 0;
   for (auto _ : state) {

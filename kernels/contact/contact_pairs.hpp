@@ -62,8 +62,15 @@ class ContactPairs {
                bool keep_history = true)
       : radius_(radius), skin_(skin), kind_(kind), label_(std::move(label)), keep_history_(keep_history) {}
 
+  // One set, points of different sizes (sphere radii): a pair is listed within sizes_i + sizes_j + skin
+  // (each <= radius / 2) rather than radius + skin: fewer pairs to test each step, the same contacts.
+  void set_sizes(const View1<T>& sizes) { sizes_ = sizes; }
+
   // One set: pairs among the points x. Returns true when the list was rebuilt.
   bool update(const VecView<T, D>& x) { return update_impl(x, x, false); }
+  // The same, with the largest displacement since the last build computed by the caller (fused into
+  // another pass over the points, e.g. dem::kick_drift_start); ignored at the first build.
+  bool update(const VecView<T, D>& x, T moved) { return update_impl(x, x, false, moved); }
   // Two sets: pairs (query i, point j). Rebuilds when a query or a point moved more than skin / 2.
   bool update(const VecView<T, D>& queries, const VecView<T, D>& points) { return update_impl(queries, points, true); }
 
@@ -86,16 +93,16 @@ class ContactPairs {
     if (between)
       search_.build_between(queries_at_build_, points_at_build_, radius_ + skin_, lists_[current_]);
     else
-      search_.build(queries_at_build_, radius_ + skin_, kind_, lists_[current_]);
+      search_.build(queries_at_build_, radius_ + skin_, kind_, lists_[current_], sizes_, skin_);
     if (keep_history_) history_[current_].resize(static_cast<std::size_t>(lists_[current_].num_pairs), label_ + "_history");
     builds_ = builds;
   }
 
  private:
-  bool update_impl(const VecView<T, D>& queries, const VecView<T, D>& points, bool between) {
+  bool update_impl(const VecView<T, D>& queries, const VecView<T, D>& points, bool between, T known = T(-1)) {
     const bool first = queries_at_build_.extent(0) != queries.extent(0) || points_at_build_.extent(0) != points.extent(0);
     if (!first) {
-      T moved = neighbors::max_displacement<T, D>(queries, queries_at_build_);
+      T moved = known >= T(0) ? known : neighbors::max_displacement<T, D>(queries, queries_at_build_);
       if (between) moved = kx::max(moved, neighbors::max_displacement<T, D>(points, points_at_build_));
       if (moved <= skin_ / T(2)) return false;
     }
@@ -110,7 +117,7 @@ class ContactPairs {
     if (between)
       search_.build_between(queries, points, radius_ + skin_, lists_[next]);
     else
-      search_.build(queries, radius_ + skin_, kind_, lists_[next]);
+      search_.build(queries, radius_ + skin_, kind_, lists_[next], sizes_, skin_);
     if (keep_history_) history_[next].resize(static_cast<std::size_t>(lists_[next].num_pairs), label_ + "_history");
     if (keep_history_ && builds_ > 0) carry_history(lists_[current_], history_[current_], lists_[next], history_[next]);
     current_ = next;
@@ -129,6 +136,7 @@ class ContactPairs {
   int current_ = 0;
   int builds_ = 0;
   VecView<T, D> queries_at_build_, points_at_build_;
+  View1<T> sizes_;  // set_sizes (empty: every pair within radius + skin)
 };
 
 }  // namespace polymech::contact

@@ -82,6 +82,10 @@ struct ContactForce {
 
 // The force on sphere i of one contact (eqs. (11)-(14)); updates the tangential spring xi when
 // `friction` (with the step dt). r_star, m_star: of this pair.
+// Cost (the DEM step's hottest function, docs/PERFORMANCE.md "DEM: the step against LIGGGHTS"): a
+// sticking contact takes three square roots on its chain (a, sqrt(S_n m*), the spring's rescaling):
+// sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*) (S_t / S_n = 4 G* / E*, a constant of the law), the rotated
+// spring is rescaled by sqrt(len0^2 / len1^2), and |F_t| is taken only when it slips (|F_t|^2 > (mu F_n)^2).
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T r_star, T m_star, T delta,
                                                            const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
@@ -91,24 +95,29 @@ KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindl
   const T s_n = T(2) * p.e_star * a;
   const T damp = T(-2) * T(0.9128709291752769) * p.beta;  // -2 sqrt(5/6) beta >= 0
   const T v_n = dot(v_rel, n);
+  const T root_n = kx::sqrt(s_n * m_star);  // sqrt(S_n m*)
   // eq. (12): k_n h with k_n = 4/3 E* sqrt(R* h), plus the viscous part gamma_n v_n
-  T f_n = T(4) / T(3) * p.e_star * a * delta - damp * kx::sqrt(s_n * m_star) * v_n;
+  T f_n = T(4) / T(3) * p.e_star * a * delta - damp * root_n * v_n;
   f_n = f_n > T(0) ? f_n : T(0);
   out.normal = f_n;
   out.force = f_n * n;
   if (!friction) return out;
   const Vec3<T> v_t = v_rel - v_n * n;
   // the spring of the previous step, rotated into the current tangent plane (its length kept)
-  const T len0 = norm(xi);
-  xi = xi - dot(xi, n) * n;
-  const T len1 = norm(xi);
-  if (len1 > T(0)) xi = (len0 / len1) * xi;
+  const T len0_2 = norm2(xi);
+  if (len0_2 > T(0)) {
+    xi = xi - dot(xi, n) * n;
+    const T len1_2 = norm2(xi);
+    if (len1_2 > T(0)) xi = kx::sqrt(len0_2 / len1_2) * xi;
+  }
   xi += dt * v_t;
   const T s_t = T(8) * p.g_star * a;
-  Vec3<T> f_t = -s_t * xi - damp * kx::sqrt(s_t * m_star) * v_t;  // eq. (13)
-  const T ft = norm(f_t), limit = p.mu * f_n;
-  if (ft > limit) {  // eq. (14): Coulomb slip; the spring keeps what the limit allows
-    f_t = ft > T(0) ? (limit / ft) * f_t : f_t;
+  const T root_t = p.e_star > T(0) ? root_n * kx::sqrt(T(4) * p.g_star / p.e_star) : T(0);  // sqrt(S_t m*)
+  Vec3<T> f_t = -s_t * xi - damp * root_t * v_t;  // eq. (13)
+  const T ft2 = norm2(f_t), limit = p.mu * f_n;
+  if (ft2 > limit * limit) {  // eq. (14): Coulomb slip; the spring keeps what the limit allows
+    const T ft = kx::sqrt(ft2);
+    f_t = (limit / ft) * f_t;  // ft > limit >= 0
     xi = s_t > T(0) ? (T(-1) / s_t) * f_t : Vec3<T>::zero();
   }
   out.force += f_t;

@@ -55,16 +55,67 @@ KOKKOS_INLINE_FUNCTION Vec3<T> spring(const SpringView<T>& h, Offset k, bool fri
 template <class T>
 using PairLoadView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
 
-// Kernels "polymech::dem::sphere_sphere" and "polymech::dem::sphere_sphere_gather": Hertz-Mindlin forces
-// between listed spheres in contact, over a half list (j > i: each pair computed once). The first
-// kernel adds each pair's force and torque to its first member i (a row is one sphere's: no atomics)
-// and writes what the second member gets to pair_load(k); the second gathers those into each j over
-// the list's transpose, in increasing k. The sums are in a fixed order: any thread count gives the
-// same bits. One tangential spring per pair, hist(k), from i's side (v_rel = i's contact point less j's).
+// The planes near each sphere, a bit per plane (at most max_planes): a Verlet list for the planes,
+// rebuilt with the sphere list. An empty mask View: every plane is near every sphere.
+using PlaneMask = Kokkos::View<std::uint32_t*, MemSpace>;
+inline constexpr int max_planes = 32;
+
+// Analytic planes in contact with the spheres: the planes, their springs hist(i * planes + q), the mask
+// of the planes near each sphere (near_planes; empty: all) and the sphere-wall law. No planes: empty.
 template <class T>
-void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const neighbors::ListTranspose& transposed,
-                          const SpringView<T>& hist, const PairLoadView<T>& pair_load, const HertzMindlin<T>& p, bool friction, T dt) {
+struct PlaneContacts {
+  PlaneView<T> planes;
+  SpringView<T> hist;
+  PlaneMask near;
+  HertzMindlin<T> law;
+};
+
+namespace detail {
+
+// Sphere i (centre x, radius r, mass m, velocity v, spin w) against the planes near it, one-sided: a
+// sphere whose centre is less than r behind a plane is pushed out along its normal (R* = r, m* = m, lever
+// r); the forces and torques are added to f_sum, t_sum.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Index i, const Vec3<T>& x, T r, T m, const Vec3<T>& v,
+                                                const Vec3<T>& w, bool friction, T dt, Vec3<T>& f_sum, Vec3<T>& t_sum) {
+  const Index np = static_cast<Index>(pc.planes.extent(0));
+  const std::uint32_t bits = pc.near.extent(0) == 0 ? ~std::uint32_t(0) : pc.near(i);
+  if (bits == 0) return;
+  for (Index q = 0; q < np; ++q) {
+    if (!((bits >> q) & 1u)) continue;
+    const Offset k = static_cast<Offset>(i) * np + q;
+    const Vec3<T> point{{pc.planes(q, 0), pc.planes(q, 1), pc.planes(q, 2)}};
+    const Vec3<T> n{{pc.planes(q, 3), pc.planes(q, 4), pc.planes(q, 5)}};
+    const T d = dot(x - point, n);
+    const T delta = r - d;
+    if (!(delta > T(0)) || !(d > -r)) {  // apart: a spring is dropped (read first: most are zero already)
+      if (friction && (pc.hist(k, 0) != T(0) || pc.hist(k, 1) != T(0) || pc.hist(k, 2) != T(0))) store<3>(pc.hist, k, Vec3<T>::zero());
+      continue;
+    }
+    const Vec3<T> v_rel = v + cross(w, (-r) * n);
+    Vec3<T> xi = spring(pc.hist, k, friction);
+    const auto c = hertz_mindlin_force(pc.law, r, m, delta, n, v_rel, friction, dt, xi);
+    if (friction) store<3>(pc.hist, k, xi);
+    f_sum += c.force;
+    t_sum -= r * cross(n, c.force);
+  }
+}
+
+}  // namespace detail
+
+// Kernel "polymech::dem::sphere_sphere": Hertz-Mindlin forces between listed spheres in contact, over a
+// half list (j > i: each pair computed once), and each sphere's contacts with the analytic planes
+// `planes` (if any; the same arithmetic as sphere_plane_forces, in the same pass over the spheres). A row
+// is one sphere's: its pairs' force and torque go to its first member i (no atomics), what the second
+// member gets to pair_load(k); sphere_sphere_gather then adds those to each j over the list's transpose,
+// in increasing k. The sums are in a fixed order: any thread count gives the same bits. One tangential
+// spring per pair, hist(k), from i's side (v_rel = i's contact point less j's).
+template <class T>
+void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& list, const SpringView<T>& hist,
+                        const PairLoadView<T>& pair_load, const HertzMindlin<T>& p, bool friction, T dt,
+                        const PlaneContacts<T>& planes = PlaneContacts<T>()) {
   const bool clumped = s.body.extent(0) > 0;
+  const bool walls = planes.planes.extent(0) > 0;
   Kokkos::parallel_for(
       "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
@@ -101,14 +152,25 @@ void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& 
             pair_load(k, 3 + q) = -lj * nxf[q];
           }
         }
+        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, dt, f_sum, t_sum);
         const T inv_inertia = T(2.5) / (mi * ri * ri);
         for (int q = 0; q < 3; ++q) {
           s.a(i, q) += f_sum[q] / mi;
           s.alpha(i, q) += inv_inertia * t_sum[q];
         }
       });
+}
+
+// Kernel "polymech::dem::sphere_sphere_gather": each sphere j adds what its pairs as second member give it
+// (pair_load over the list's transpose, in increasing k). With h > 0 (kernel
+// "polymech::dem::sphere_sphere_gather_kick") it then takes velocity Verlet's second half kick in the same
+// pass, v += h a, omega += h alpha (kick's arithmetic): when nothing else adds to a after the gather.
+template <class T>
+void sphere_sphere_gather(const SphereSet<T>& s, const neighbors::ListTranspose& transposed, const PairLoadView<T>& pair_load, T h = T(0)) {
+  const bool kick = h > T(0);
   Kokkos::parallel_for(
-      "polymech::dem::sphere_sphere_gather", range(list.num_particles), KOKKOS_LAMBDA(const Index j) {
+      kick ? "polymech::dem::sphere_sphere_gather_kick" : "polymech::dem::sphere_sphere_gather", range(s.size()),
+      KOKKOS_LAMBDA(const Index j) {
         Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
         for (Offset e = transposed.begin(j); e < transposed.end(j); ++e) {
           const Offset k = transposed.entry(e);
@@ -122,14 +184,21 @@ void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& 
         for (int q = 0; q < 3; ++q) {
           s.a(j, q) += f_sum[q] / mj;
           s.alpha(j, q) += inv_inertia * t_sum[q];
+          if (kick) {
+            s.v(j, q) += h * s.a(j, q);
+            s.omega(j, q) += h * s.alpha(j, q);
+          }
         }
       });
 }
 
-// The planes near each sphere, a bit per plane (at most max_planes): a Verlet list for the planes,
-// rebuilt with the sphere list. An empty mask View: every plane is near every sphere.
-using PlaneMask = Kokkos::View<std::uint32_t*, MemSpace>;
-inline constexpr int max_planes = 32;
+// Both sphere-sphere kernels: sphere_sphere_rows (without planes), then sphere_sphere_gather.
+template <class T>
+void sphere_sphere_forces(const SphereSet<T>& s, const neighbors::NeighborList& list, const neighbors::ListTranspose& transposed,
+                          const SpringView<T>& hist, const PairLoadView<T>& pair_load, const HertzMindlin<T>& p, bool friction, T dt) {
+  sphere_sphere_rows(s, list, hist, pair_load, p, friction, dt);
+  sphere_sphere_gather(s, transposed, pair_load);
+}
 
 // Kernel "polymech::dem::near_planes": bit q of mask(i) is set when sphere i is within r_i + reach of
 // plane q's front (-r_i - reach < d < r_i + reach): with reach = the Verlet skin, no sphere can touch a
@@ -158,34 +227,20 @@ void near_planes(const SphereSet<T>& s, const PlaneView<T>& planes, T reach, con
 
 // Kernel "polymech::dem::sphere_plane": every sphere against the planes near it (`near`, near_planes;
 // empty: all planes), one-sided: a sphere whose centre is less than r behind a plane is pushed out
-// along its normal. hist(i * planes + q).
+// along its normal. hist(i * planes + q). (The DEM model does this in sphere_sphere_rows' pass.)
 template <class T>
 void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, const SpringView<T>& hist,
                          const HertzMindlin<T>& p, bool friction, T dt, const PlaneMask& near = PlaneMask()) {
-  const Index np = static_cast<Index>(planes.extent(0));
-  const bool all = near.extent(0) == 0;
+  const PlaneContacts<T> pc{planes, hist, near, p};
   Kokkos::parallel_for(
       "polymech::dem::sphere_plane", range(s.size()), KOKKOS_LAMBDA(const Index i) {
-        std::uint32_t bits = all ? ~std::uint32_t(0) : near(i);
-        if (bits == 0) return;
-        const Vec3<T> xi_pos = load<3>(s.x, i);
-        const T ri = s.radius(i);
-        for (Index q = 0; q < np; ++q) {
-          if (!((bits >> q) & 1u)) continue;
-          const Offset k = static_cast<Offset>(i) * np + q;
-          const Vec3<T> point{{planes(q, 0), planes(q, 1), planes(q, 2)}};
-          const Vec3<T> n{{planes(q, 3), planes(q, 4), planes(q, 5)}};
-          const T d = dot(xi_pos - point, n);
-          const T delta = ri - d;
-          if (!(delta > T(0)) || !(d > -ri)) {  // apart: a spring is dropped (read first: most are zero already)
-            if (friction && (hist(k, 0) != T(0) || hist(k, 1) != T(0) || hist(k, 2) != T(0))) store<3>(hist, k, Vec3<T>::zero());
-            continue;
-          }
-          const Vec3<T> v_rel = load<3>(s.v, i) + cross(load<3>(s.omega, i), (-ri) * n);
-          Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(p, ri, s.mass(i), delta, n, v_rel, friction, dt, xi);  // R* = r, m* = m
-          if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, ri, c.force);
+        const T ri = s.radius(i), mi = s.mass(i);
+        Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
+        detail::plane_contacts(pc, i, load<3>(s.x, i), ri, mi, load<3>(s.v, i), load<3>(s.omega, i), friction, dt, f_sum, t_sum);
+        const T inv_inertia = T(2.5) / (mi * ri * ri);
+        for (int q = 0; q < 3; ++q) {
+          s.a(i, q) += f_sum[q] / mi;
+          s.alpha(i, q) += inv_inertia * t_sum[q];
         }
       });
 }

@@ -79,6 +79,36 @@ void kick_drift(const SphereSet<T>& s, T h, T dt) {
         }
       });
 }
+// kernel "polymech::dem::kick_drift" (a reduction here): the first half and start_forces below in one pass
+// over the spheres (a step of spheres without clumps: nothing moves them between the two): v += h a,
+// omega += h alpha, u += dt v, x = x0 + u, a = g, alpha = 0; returns the largest |x - x_build| (the Verlet
+// list's displacement check, neighbors::max_displacement's value bit for bit; 0 for an empty x_build).
+template <class T>
+T kick_drift_start(const SphereSet<T>& s, T h, T dt, const Vec3<T>& g, const VecView<T, 3>& x_build) {
+  const auto u = s.u, v = s.v, a = s.a, omega = s.omega, alpha = s.alpha, x = s.x, x0 = s.x0;
+  const bool check = x_build.extent(0) == static_cast<std::size_t>(s.size());
+  T m2 = T(0);
+  Kokkos::parallel_reduce(
+      "polymech::dem::kick_drift", range(s.size()),
+      KOKKOS_LAMBDA(const Index i, T& m) {
+        T d2 = T(0);
+        for (int k = 0; k < 3; ++k) {
+          v(i, k) += h * a(i, k);
+          omega(i, k) += h * alpha(i, k);
+          u(i, k) += dt * v(i, k);
+          x(i, k) = x0(i, k) + u(i, k);
+          a(i, k) = g[k];
+          alpha(i, k) = T(0);
+          if (check) {
+            const T d = x(i, k) - x_build(i, k);
+            d2 += d * d;
+          }
+        }
+        m = d2 > m ? d2 : m;
+      },
+      Kokkos::Max<T>(m2));
+  return kx::sqrt(m2);
+}
 // kernel "polymech::dem::kick": v += h a, omega += h alpha (its second half);
 template <class T>
 void kick(const SphereSet<T>& s, T h) {

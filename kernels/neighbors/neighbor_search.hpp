@@ -18,7 +18,7 @@ namespace detail {
 
 // Visit every point j of x in the 3^D cells around the position xi whose distance to xi is <= radius,
 // except `self` and, for half lists, j < self, in a fixed order: cells lexicographically (the first
-// coordinate fastest), then ascending index.
+// coordinate fastest), then ascending index. visit(j, r2) gets the squared distance.
 template <class T, int D, class PositionView, class Visit>
 KOKKOS_INLINE_FUNCTION void for_each_point_near(const CellGrid<T, D>& grid, const PositionView& x, const Vec<T, D>& xi,
                                                 Index self, T radius2, bool half, Visit&& visit) {
@@ -39,7 +39,7 @@ KOKKOS_INLINE_FUNCTION void for_each_point_near(const CellGrid<T, D>& grid, cons
         const T d = x(j, k) - xi[k];
         r2 += d * d;
       }
-      if (r2 <= radius2) visit(j);
+      if (r2 <= radius2) visit(j, r2);
     }
     int k = 0;
     while (k < D && ++cc[k] > hi[k]) {
@@ -86,18 +86,27 @@ struct OtherQueries {
   KOKKOS_INLINE_FUNCTION Index self(Index) const { return Index(-1); }
 };
 
-// The rows of `out` for n queries against the binned points: count, scan, fill.
+// The rows of `out` for n queries against the binned points: count, scan, fill. With `sizes` (one set
+// only: sizes of the points), a pair is listed only within sizes(i) + sizes(j) + margin (<= radius).
 template <class T, int D, class Queries>
 void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Queries& queries, Index n, T radius,
-               bool half, NeighborList& out) {
+               bool half, NeighborList& out, const View1<T>& sizes = View1<T>(), T margin = T(0)) {
   if (out.offsets.extent(0) < static_cast<std::size_t>(n) + 1)
     out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::offsets", static_cast<std::size_t>(n) + 1);
   const T radius2 = radius * radius;
+  const bool sized = sizes.extent(0) > 0;
   auto offsets = out.offsets;
   Kokkos::parallel_for(
       "polymech::neighbors::count", range(n), KOKKOS_LAMBDA(const Index i) {
         Offset count = 0;
-        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index) { ++count; });
+        const T si = sized ? sizes(i) + margin : T(0);
+        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index j, T r2) {
+          if (sized) {
+            const T c = si + sizes(j);
+            if (r2 > c * c) return;
+          }
+          ++count;
+        });
         offsets(i + 1) = count;
       });
   const Offset total = scan_offsets(offsets, n);
@@ -106,8 +115,14 @@ void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Qu
   Kokkos::parallel_for(
       "polymech::neighbors::fill", range(n), KOKKOS_LAMBDA(const Index i) {
         Offset slot = offsets(i);
-        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half,
-                                  [&](Index j) { neighbors(slot++) = j; });
+        const T si = sized ? sizes(i) + margin : T(0);
+        for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index j, T r2) {
+          if (sized) {
+            const T c = si + sizes(j);
+            if (r2 > c * c) return;
+          }
+          neighbors(slot++) = j;
+        });
       });
   out.num_particles = n;
   out.num_pairs = total;
@@ -121,11 +136,14 @@ void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Qu
 template <class T, int D>
 class NeighborSearch {
  public:
-  // Lists every pair within `radius` of the positions x into `out` (resized only when it grows).
-  void build(const VecView<T, D>& x, T radius, ListKind kind, NeighborList& out) {
+  // Lists every pair within `radius` of the positions x into `out` (resized only when it grows). With
+  // `sizes` (one per point, e.g. sphere radii), only the pairs within sizes(i) + sizes(j) + margin, which
+  // must not exceed radius (the cells' size).
+  void build(const VecView<T, D>& x, T radius, ListKind kind, NeighborList& out, const View1<T>& sizes = View1<T>(),
+             T margin = T(0)) {
     bin_particles<T, D>(grid_, x, radius);
     detail::list_rows<T, D>(grid_, x, detail::SelfQueries<T, D>{x}, static_cast<Index>(x.extent(0)), radius,
-                            kind == ListKind::half, out);
+                            kind == ListKind::half, out, sizes, margin);
     out.kind = kind;
   }
 

@@ -74,6 +74,7 @@ class Dem {
     pp_ = law(p, p, beta, mu);
     pw_ = law(p, w, beta, mu);
     allocate_spheres();
+    pairs_.set_sizes(s_.radius);  // sphere pairs within r_i + r_j + skin (LIGGGHTS' rule), not 2 r_max + skin
     if (clumps_) allocate_clumps();
     allocate_planes();
     if (surfaces_) allocate_surface();
@@ -89,25 +90,40 @@ class Dem {
     if (prepared_) return;
     compute_forces();
     add_contact_forces();
+    if (gather_pending_) {  // the first forces are complete before the first kick
+      sphere_sphere_gather(s_, transposed_, pair_load_);
+      gather_pending_ = false;
+    }
     prepared_ = true;
   }
+  // Spheres without clumps take the first half, the start of the forces (x = x0 + u, a = g) and the
+  // sphere list's displacement check in one pass (kick_drift_start); the second half kick is the gather's
+  // pass (sphere_sphere_gather with h). With clumps, the members' motion is the clumps': separate passes.
   void advance_first_half() {
     if (wheel_) wheel_drive_.first_half(step_, cfg_.dt, s_, mesh_);
     const T dt = T(cfg_.dt);
-    kick_drift(s_, T(0.5) * dt, dt);
-    if (clumps_) {  // the members' own kick and drift above are overwritten by their clump's motion
-      clump_kick(clumps_set_, 0.5 * cfg_.dt);
-      clump_drift(clumps_set_, cfg_.dt);
-      clump_members(s_, clumps_set_, true);
+    if (!clumps_) {
+      moved_ = kick_drift_start(s_, T(0.5) * dt, dt, gravity(), pairs_.queries_at_build());
+      forces_started_ = true;
+      return;
     }
+    kick_drift(s_, T(0.5) * dt, dt);
+    clump_kick(clumps_set_, 0.5 * cfg_.dt);
+    clump_drift(clumps_set_, cfg_.dt);
+    clump_members(s_, clumps_set_, true);
   }
   void compute_forces() {
-    start_forces(s_, gravity());
+    if (!forces_started_) start_forces(s_, gravity());
+    forces_started_ = false;
   }
   void observe() {}
   void add_contact_forces() {
     const T dt = T(cfg_.dt);
-    pairs_.update(s_.x);
+    if (moved_ >= T(0))
+      pairs_.update(s_.x, moved_);
+    else
+      pairs_.update(s_.x);
+    moved_ = T(-1);
     if (transposed_at_ != pairs_.builds()) {  // a new list: its transpose and the pairs' load rows
       neighbors::transpose(pairs_.list(), transposed_);
       const auto np = static_cast<std::size_t>(pairs_.list().num_pairs);
@@ -115,26 +131,37 @@ class Dem {
         pair_load_ = PairLoadView<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::dem::pair_load")), np + np / 8 + 16);
       transposed_at_ = pairs_.builds();
     }
-    sphere_sphere_forces(s_, pairs_.list(), transposed_, pairs_.history().values, pair_load_, pp_, friction_, dt);
+    PlaneContacts<T> walls;
     if (planes_.extent(0) > 0) {
       if (planes_at_ != pairs_.builds()) {  // the planes' Verlet mask, with the sphere list
         near_planes(s_, planes_, T(skin(cfg_, clump_init_)), near_planes_, plane_history_, friction_);
         planes_at_ = pairs_.builds();
       }
-      sphere_plane_forces(s_, planes_, plane_history_, pw_, friction_, dt, near_planes_);
+      walls = PlaneContacts<T>{planes_, plane_history_, near_planes_, pw_};
     }
+    sphere_sphere_rows(s_, pairs_.list(), pairs_.history().values, pair_load_, pp_, friction_, dt, walls);
     if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt,
                           wheel_ ? wheel_drive_.motion(step_, cfg_.dt) : SurfaceMotion<T>(), wheel_drive_.reaction());
       if (wheel_) wheel_drive_.add_loads(step_, cfg_.dt);
     }
-    if (clumps_) clump_loads(s_, clumps_set_, gravity());
+    if (clumps_) {
+      sphere_sphere_gather(s_, transposed_, pair_load_);
+      clump_loads(s_, clumps_set_, gravity());
+    } else {
+      gather_pending_ = true;  // with the second half kick (advance_second_half)
+    }
   }
   void advance_second_half() {
     if (wheel_) wheel_drive_.second_half(cfg_.dt);  // the wheel's height: m z'' = F_z (gravel + load)
     const T h = T(0.5) * T(cfg_.dt);
-    kick(s_, h);
+    if (gather_pending_) {
+      sphere_sphere_gather(s_, transposed_, pair_load_, h);
+      gather_pending_ = false;
+    } else {
+      kick(s_, h);
+    }
     if (clumps_) {
       clump_kick(clumps_set_, 0.5 * cfg_.dt);
       clump_members(s_, clumps_set_, false);
@@ -416,6 +443,9 @@ class Dem {
   models::StateRegistry state_;
   std::int64_t step_ = 0;
   bool prepared_ = false;
+  bool forces_started_ = false;  // kick_drift_start did start_forces' work this step
+  bool gather_pending_ = false;  // the sphere-sphere gather waits for the second half kick
+  T moved_ = T(-1);              // the sphere list's displacement check, from kick_drift_start (< 0: none)
 };
 
 }  // namespace polymech::dem

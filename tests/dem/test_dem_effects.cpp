@@ -38,9 +38,13 @@ TEST(DemEffects, NoEffectsLaunchesOnlyTheBaseKernelsAndAllocatesNoHistory) {
   EXPECT_EQ(census.launches("polymech::dem::sphere_facet"), 0);
   EXPECT_EQ(census.launches("polymech::contact::facet_geometry"), 0);
   EXPECT_EQ(census.launches("polymech::dem::sphere_sphere"), 21);  // 20 steps + the initial forces
-  EXPECT_EQ(census.launches("polymech::dem::sphere_plane"), 21);
-  EXPECT_EQ(census.launches("polymech::dem::kick_drift"), 20);
-  EXPECT_EQ(census.launches("polymech::dem::kick"), 20);
+  EXPECT_EQ(census.launches("polymech::dem::sphere_plane"), 0);  // the planes are in sphere_sphere's rows
+  EXPECT_EQ(census.launches("polymech::dem::kick_drift"), 20);     // with start_forces and the list's check
+  EXPECT_EQ(census.launches("polymech::dem::start_forces"), 1);    // the initial forces
+  EXPECT_EQ(census.launches("polymech::dem::sphere_sphere_gather"), 1);
+  EXPECT_EQ(census.launches("polymech::dem::sphere_sphere_gather_kick"), 20);  // the second half kick
+  EXPECT_EQ(census.launches("polymech::dem::kick"), 0);
+  EXPECT_EQ(census.launches("polymech::neighbors::max_displacement"), 0);
 }
 
 TEST(DemEffects, EveryEffectLaunchesItsKernelsAndAllocatesItsState) {
