@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   int test = 1, level = 1;
   double dt = 0.01, end = 12.0;
   bool chord = true;
+  double kick = 0.0;  // CFD3: peak angular velocity (rad/s) of the obstacle's rigid-rotation kick at t = 2..2.25 s
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i];
     if (k == "--out") out = argv[i + 1];
@@ -29,8 +30,9 @@ int main(int argc, char** argv) {
     else if (k == "--dt") dt = std::atof(argv[i + 1]);
     else if (k == "--time") end = std::atof(argv[i + 1]);
     else if (k == "--chord") chord = std::atoi(argv[i + 1]) != 0;
+    else if (k == "--kick") kick = std::atof(argv[i + 1]);
     else {
-      std::fprintf(stderr, "sweep_turek_hron_cfd: unknown option '%s' (allowed: --out, --test, --level, --dt, --time, --chord 0|1)\n", argv[i]);
+      std::fprintf(stderr, "sweep_turek_hron_cfd: unknown option '%s' (allowed: --out, --test, --level, --dt, --time, --chord 0|1, --kick OMEGA)\n", argv[i]);
       return 2;
     }
   }
@@ -46,6 +48,7 @@ int main(int argc, char** argv) {
     c.mean_velocity = ubar[test];
     c.ramp_time = test == 3 ? 2.0 : 0.0;
     c.level = level;
+    if (test == 3) c.kick_omega = kick;
     const fl::TurekHronReference ref = fl::turek_hron_reference(test);
     const std::clock_t c0 = std::clock();
     fl::FlowConfig cfg = fl::turek_hron_config(c);
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
     } else {
       std::filesystem::create_directories(out);
       char name[128];
-      std::snprintf(name, sizeof(name), "cfd3_l%d_dt%g%s.csv", level, dt, chord ? "" : "_newton");
+      std::snprintf(name, sizeof(name), "cfd3_l%d_dt%g%s%s.csv", level, dt, chord ? "" : "_newton", kick != 0.0 ? "_kick" : "");
       FILE* fp = std::fopen((out / name).c_str(), "w");
       std::fprintf(fp, "t,drag,lift,newton\n");
       std::vector<double> ts, drag, lift;
@@ -86,7 +89,11 @@ int main(int argc, char** argv) {
         drag.push_back(ns.forces().drag);
         lift.push_back(ns.forces().lift);
         std::fprintf(fp, "%.6f,%.9e,%.9e,%d\n", ns.time(), ns.forces().drag, ns.forces().lift, r.iterations);
-        if (k % 100 == 0) std::fflush(fp);
+        if (k % 100 == 0) {
+          std::fflush(fp);
+          std::fprintf(stderr, "t = %.3f s: drag %.3f, lift %.3f (CPU %.0f s)\n", ns.time(), ns.forces().drag, ns.forces().lift,
+                       double(std::clock() - c0) / CLOCKS_PER_SEC);
+        }
       }
       std::fclose(fp);
       const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;

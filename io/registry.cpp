@@ -3,6 +3,7 @@
 #include "io/dem_pour_scene.hpp"
 #include "io/dem_scene.hpp"
 #include "io/efg_scene.hpp"
+#include "io/flow_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
@@ -62,6 +63,10 @@ const std::vector<SceneKind>& scene_kinds() {
        {"piezo_harvester"}, [](const std::filesystem::path& f) { load_piezo_scene(f); },
        [](const std::filesystem::path&) { return std::string("piezo_harvester"); },
        [](const std::filesystem::path& f) { return load_piezo_scene(f).cost; }},
+      {"flow", "incompressible Navier-Stokes, Taylor-Hood: the Turek-Hron CFD1-CFD3 tests (seed 002 paper 1, issue 36)",
+       {"turek_hron"}, [](const std::filesystem::path& f) { load_flow_scene(f); },
+       [](const std::filesystem::path&) { return std::string("turek_hron"); },
+       [](const std::filesystem::path& f) { return load_flow_scene(f).cost; }},
   };
   return kinds;
 }

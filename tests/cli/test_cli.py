@@ -31,6 +31,7 @@ APPS = {
     "helmholtz": "scenes/helmholtz/cube.toml",
     "isph": "scenes/isph/hydrostatic.toml",
     "piezo_harvester": "scenes/piezo/pvdf_bender.toml",
+    "turek_hron": "scenes/flow/cfd1.toml",
     "polymech": "scenes/pd/tension_lattice.toml",  # run by pd_tension
 }
 DISPATCHED = {"polymech": "pd_tension"}  # the app that reports the options polymech hands on
@@ -43,6 +44,7 @@ REFUSED = {
     "dem_benchmark": [(["--steps", "5"], "--steps 5: does not apply", True),
                       (["--accuracy", "draft"], "--accuracy draft: does not apply", True)],
     "efg": [(["--steps", "5"], "--steps 5: does not apply", False)],  # a static scene; the dynamic ones take it
+    "turek_hron": [(["--steps", "5"], "--steps 5: does not apply: a steady test", False)],  # cfd3 takes it
     # the record must hold the harmonics probe's analysis window (issue 33 item 3)
     "mps_harmonics": [(["--steps", "10"], "needs at least", False)],
 }

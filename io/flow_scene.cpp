@@ -1,0 +1,132 @@
+#include "io/flow_scene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace polymech::io {
+
+double flow_channel_cells(int level) { return 260.0 * std::pow(4.0, level); }
+
+double flow_channel_unknowns(int level) {
+  // counted by models/flow (NavierStokes2D::unknowns) on levels 0-3 (notes h-ns-docs)
+  static const double counted[4] = {2212.0, 9106.0, 36934.0, 148750.0};
+  if (level <= 3) return counted[level < 0 ? 0 : level];
+  return counted[3] * std::pow(4.0, level - 3);
+}
+
+// Rates measured with bench/sweep_turek_hron_cfd and apps/turek_hron on one thread of the Intel Xeon of
+// docs/PERFORMANCE.md: a Newton iteration (the element kernel, the scatter, Eigen's SparseLU and its solves)
+// ~0.15 s at 9 106 unknowns, growing like N^1.6 (the factorisation: 91 %); a chord time step (one
+// factorisation, ~3 residual passes and solves) ~1.2 such iterations.
+CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
+  CostEstimate c;
+  c.method = "Taylor-Hood Q2/Q1 Navier-Stokes, Turek-Hron CFD" + std::to_string(s.test) + ", level " + std::to_string(s.level) +
+             (s.transient ? ", BDF2" : ", steady Newton");
+  c.item_name = "unknowns";
+  c.items = unknowns;
+  c.max_items = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+  const double iteration = 0.15 * std::pow(unknowns / 9106.0, 1.6);
+  if (s.transient) {
+    c.steps = static_cast<double>(s.steps());
+    c.step_name = "time steps";
+    c.seconds = c.steps * 1.2 * iteration;
+  } else {
+    c.steps = s.picard_steps + 6.0;
+    c.step_name = "Oseen and Newton iterations (estimate)";
+    c.seconds = c.steps * iteration;
+  }
+  // the LU's fill, ~ N log2 N: resident 67 MB at 9 106 and 400 MB at 36 934 unknowns (CFD3 runs, one thread)
+  c.bytes = 30e6 + unknowns * (2e3 + 600.0 * std::log2(std::max(2.0, unknowns)));
+  c.rate = "a Newton iteration ~ 0.15 s x (unknowns / 9106)^1.6, a time step ~1.2 of them (1 thread, docs/PERFORMANCE.md)";
+  c.rate_threads = 1;
+  c.size_keys = {"mesh.level = " + std::to_string(s.scene_level)};
+  if (s.transient) {
+    c.size_keys.push_back("time.dt = " + format_number(s.dt));
+    c.size_keys.push_back("time.end_time = " + format_number(s.end_time));
+  }
+  return c;
+}
+
+FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  FlowScene out;
+  const OpenScene s = open_scene(file, "flow", {}, options.precision);
+  out.header = s.header;
+  if (out.header.precision != "double")
+    s.model.fail("precision", "= \"" + out.header.precision + "\"" +
+                                  (options.precision.empty() ? std::string() : std::string(" (--precision)")) +
+                                  ": the flow solver assembles and factorises in double precision only; allowed: \"double\"");
+  s.model.finish();
+  const SceneTable& root = s.root;
+  out.header.set_accuracy(read_accuracy(root, options.accuracy, 0.0, "paper"));
+  FlowSetup& c = out.config;
+
+  {
+    const SceneTable t = root.table("case");
+    c.benchmark = t.choice("benchmark", {"turek_hron"});
+    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3"});
+    c.test = test[3] - '0';
+    const double ubar[4] = {0.0, 0.2, 1.0, 2.0};
+    c.mean_velocity = t.real("mean_velocity", ubar[c.test], Range{0.0, 100.0, true, false, "m/s (the inflow's mean velocity)"});
+    c.density = t.real("density", 1000.0, Range{1e-3, 1e5, false, false, "kg/m^3"});
+    c.viscosity = t.real("viscosity", 1e-3, Range{1e-8, 1e3, false, false, "m^2/s (kinematic)"});
+    t.finish();
+  }
+  c.transient = c.test == 3;
+  {
+    const SceneTable t = root.table("mesh");
+    c.scene_level = static_cast<int>(t.integer("level", 0, 6));
+    const int coarser = static_cast<int>(std::lround(std::log2(out.header.coarsening)));
+    c.level = std::max(0, c.scene_level - coarser);
+    t.finish();
+  }
+  if (const auto t = root.optional_table("solver")) {
+    c.picard_steps = static_cast<int>(t->integer("picard_steps", c.transient ? 0 : 3, 0, 100));
+    c.max_iterations = static_cast<int>(t->integer("max_iterations", 25, 1, 1000));
+    c.tolerance = t->real("tolerance", 1e-10, Range{1e-15, 1e-2, false, false, "(the Newton update relative to max |u|)"});
+    if (c.transient) {
+      c.chord = t->boolean("chord", true);
+    } else if (t->has("chord")) {
+      t->fail("chord", "applies to time steps (test = \"cfd3\"); a steady solve is plain Newton");
+    }
+    t->finish();
+  } else {
+    c.picard_steps = c.transient ? 0 : 3;
+  }
+  const auto time = root.optional_table("time");
+  const auto kick = root.optional_table("kick");
+  if (!c.transient) {
+    if (time) time->fail_table("applies to test = \"cfd3\" (periodic); cfd1 and cfd2 are solved steady: remove [time]");
+    if (kick) kick->fail_table("applies to test = \"cfd3\" (periodic); cfd1 and cfd2 are solved steady: remove [kick]");
+  } else {
+    if (!time) root.fail("time", "is missing: test = \"cfd3\" runs in time and needs [time] dt and end_time (s)");
+    c.dt = time->real("dt", Range{1e-6, 1.0, false, false, "s"});
+    c.ramp_time = time->real("ramp_time", 2.0, Range{0.0, 1e4, false, false, "s (0: the full inflow from t = 0)"});
+    c.end_time = time->real("end_time", Range{0.0, 1e5, true, false, "s"});
+    if (!(c.end_time >= c.dt))
+      time->fail("end_time", "= " + format_number(c.end_time) + " is out of range: must be >= time.dt = " + format_number(c.dt) + " s");
+    if (c.steps() > 100000000LL) time->fail("end_time", "= " + format_number(c.end_time) + " gives more than 1e8 steps of time.dt");
+    c.sample_every = static_cast<int>(time->integer("sample_every", 1, 1, 1000000));
+    time->finish();
+    if (kick) {
+      c.kick_omega = kick->real("omega", Range{-1e3, 1e3, false, false, "rad/s (the peak angular velocity; 0: no kick)"});
+      c.kick_start = kick->real("start", std::max(c.ramp_time, 0.0), Range{0.0, 1e5, false, false, "s"});
+      c.kick_duration = kick->real("duration", 0.25, Range{0.0, 1e3, true, false, "s"});
+      if (!(c.kick_start < c.end_time))
+        kick->fail("start", "= " + format_number(c.kick_start) + " s is out of range: must be < time.end_time = " +
+                                format_number(c.end_time) + " s");
+      kick->finish();
+    }
+  }
+  root.finish();
+
+  out.cells = flow_channel_cells(c.level);
+  out.unknowns = flow_channel_unknowns(c.level);
+  out.cost = flow_cost(c, out.unknowns);
+  check_size(out.cost, root.table("mesh"));
+  return out;
+}
+
+}  // namespace polymech::io

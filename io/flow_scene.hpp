@@ -1,0 +1,67 @@
+// Scene files of the incompressible flow solver (issue 36; seed 002 paper 1 eqs. (1)-(3) on a fixed mesh):
+// scenes/flow/*.toml -> a validated FlowScene that apps/turek_hron runs. SI units.
+//
+//   [model]     kind = "flow", effects = [] (the model has none), precision = "double" (the sparse direct
+//               solves are double; "float" is refused)
+//   [case]      benchmark = "turek_hron" (the channel with the cylinder and the rigid flag, Turek & Hron 2006),
+//               test = "cfd1" | "cfd2" | "cfd3" (the inflow's mean velocity 0.2, 1, 2 m/s; cfd1 and cfd2 are
+//               solved steady, cfd3 in time), density (default 1000 kg/m^3), viscosity (kinematic, default
+//               1e-3 m^2/s): the benchmark's values unless changed
+//   [mesh]      level 0..6 at accuracy "paper" (260 x 4^level Q2/Q1 cells); the presets "standard" and "draft"
+//               take log2 of their factor (1 and 2 by default) levels off, down to level 0
+//   [solver]    picard_steps (Oseen steps from rest before Newton; default 3 for a steady test, 0 in time),
+//               max_iterations (Newton, per solve or step, default 25), tolerance (on the update relative to
+//               max |u|, default 1e-10), chord (time steps: keep a step's first factorisation, default true)
+//   [time]      cfd3 only: dt (s), end_time (s), ramp_time (s, the inflow's cosine ramp, default 2),
+//               sample_every (steps between rows of forces.csv, default 1)
+//   [kick]      cfd3 only, optional: omega (rad/s, the peak angular velocity of a rigid rotation of the cylinder
+//               and flag that breaks the symmetry so shedding starts sooner), start (s, default the ramp's
+//               end), duration (s, default 0.25); models/flow/turek_hron.hpp
+//   [accuracy]  default = "paper" unless set; the presets' factors as every scene
+//
+// Every problem is a SceneError naming the file, line, key and what is allowed. Host-only and free of Kokkos.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "io/cost.hpp"
+#include "io/scene.hpp"
+
+namespace polymech::io {
+
+struct FlowSetup {
+  std::string benchmark = "turek_hron";
+  int test = 1;                       // 1, 2, 3: CFD1, CFD2, CFD3
+  double mean_velocity = 0.2, density = 1000.0, viscosity = 1e-3;
+  int level = 0;                      // after the accuracy preset
+  int scene_level = 0;                // as written (accuracy "paper")
+  bool transient = false;             // cfd3
+  int picard_steps = 3, max_iterations = 25;
+  double tolerance = 1e-10;
+  bool chord = true;
+  double dt = 0.0, end_time = 0.0, ramp_time = 0.0;
+  int sample_every = 1;
+  double kick_omega = 0.0, kick_start = 2.0, kick_duration = 0.25;
+  std::int64_t steps() const { return transient ? static_cast<std::int64_t>(end_time / dt + 0.5) : 0; }
+};
+
+struct FlowScene {
+  SceneHeader header;
+  FlowSetup config;
+  double cells = 0.0, unknowns = 0.0;  // of the Turek-Hron channel at config.level
+  CostEstimate cost;
+};
+
+// Cells and free unknowns (two velocity components on the free Q2 nodes, the Q1 pressures) of the Turek-Hron
+// channel at `level`: counted on levels 0-3 (models/flow/mesh.hpp), x4 per level above.
+double flow_channel_cells(int level);
+double flow_channel_unknowns(int level);
+
+// What a run costs: the Newton iterations (steady) or the time steps (one factorisation each with the chord
+// iteration), each dominated by the sparse LU (docs/PERFORMANCE.md, issue 36).
+CostEstimate flow_cost(const FlowSetup& s, double unknowns);
+
+FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions& options = {});
+
+}  // namespace polymech::io
