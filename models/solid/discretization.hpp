@@ -9,6 +9,11 @@
 // no active cell touches are dropped and the others numbered compactly in lattice order (`node_ids`,
 // `lattice_points`), chunks without an active cell are left out, and the sides list the existing nodes and
 // the faces of active cells on them. Without a mask every table is what it was (node = lattice point).
+//
+// A periodic direction (StructuredMesh::periodic) has p n_d lattice points (the last plane is the first one):
+// node() wraps the index, its two sides do not exist, and the chunk colouring gives the last block of an odd
+// number of blocks a third colour digit (it touches the first block through the seam). A mapped lattice
+// (StructuredMesh::map) places each node at the map of its multilinear position.
 #pragma once
 
 #include <algorithm>
@@ -28,6 +33,7 @@ template <int D>
 struct Discretization {
   int order = 1, n1d = 2;
   std::array<int, D> cells{}, lattice{};  // cells and nodes per direction
+  std::array<bool, D> periodic{};         // closed directions (lattice[d] = order cells[d])
   std::int64_t nodes = 0;
   std::vector<double> coordinates;            // nodes x D
   std::vector<std::int64_t> element_cells;    // storage index -> cell (lattice order)
@@ -40,9 +46,10 @@ struct Discretization {
   std::vector<std::int64_t> lattice_points;   // node -> lattice point
 
   int nodes_per_element() const { return D == 3 ? n1d * n1d * n1d : n1d * n1d; }
+  // The lattice point of index I (a periodic direction's index taken modulo its lattice).
   std::int64_t lattice_point(const std::array<int, D>& I) const {
     std::int64_t v = 0;
-    for (int d = D - 1; d >= 0; --d) v = v * lattice[d] + I[d];
+    for (int d = D - 1; d >= 0; --d) v = v * lattice[d] + (periodic[d] && I[d] >= lattice[d] ? I[d] - lattice[d] : I[d]);
     return v;
   }
   // The node at lattice point I (-1 on a masked lattice where the point has no node).
@@ -88,9 +95,13 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
   s.order = order;
   s.n1d = order + 1;
   s.cells = m.cells;
+  s.periodic = m.periodic;
   std::int64_t points = 1;
   for (int d = 0; d < D; ++d) {
-    s.lattice[d] = order * m.cells[d] + 1;
+    if (m.periodic[d] && m.cells[d] < 3)
+      throw std::invalid_argument("solid: a periodic lattice direction needs at least 3 cells (it has " +
+                                  std::to_string(m.cells[d]) + ")");
+    s.lattice[d] = order * m.cells[d] + (m.periodic[d] ? 0 : 1);
     points *= s.lattice[d];
   }
   s.nodes = points;
@@ -136,6 +147,7 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
     const auto I = s.lattice_index(v);
     std::array<int, D> cell;
     std::array<double, D> t;  // position in [0, 1] inside the cell, exact at the ends
+    double xi[D] = {};        // the multilinear position
     for (int d = 0; d < D; ++d) {
       cell[d] = std::min(I[d] / order, m.cells[d] - 1);
       const int a = I[d] - order * cell[d];
@@ -151,27 +163,38 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
       }
       if (w == 0.0) continue;
       const std::int64_t vert = m.vertex(vi);
-      for (int d = 0; d < D; ++d)
-        s.coordinates[static_cast<std::size_t>(D * v + d)] += w * m.vertices[static_cast<std::size_t>(D * vert + d)];
+      for (int d = 0; d < D; ++d) xi[d] += w * m.vertices[static_cast<std::size_t>(D * vert + d)];
     }
+    double* x = s.coordinates.data() + static_cast<std::size_t>(D * v);
+    if (m.map)
+      m.map(xi, x);
+    else
+      for (int d = 0; d < D; ++d) x[d] = xi[d];
   }
-  // chunks: blocks of chunk_edge^D cells, coloured by the parity of the block index
+  // chunks: blocks of chunk_edge^D cells, coloured by the parity of the block index (a digit 0/1 per
+  // direction; 2 for the last block of a periodic direction with an odd number of blocks > 1)
   const int b = std::max(1, chunk_edge);
   std::array<int, D> blocks;
   for (int d = 0; d < D; ++d) blocks[d] = (m.cells[d] + b - 1) / b;
   std::int64_t nblocks = 1;
   for (int d = 0; d < D; ++d) nblocks *= blocks[d];
   const int N = s.n1d, ND = s.nodes_per_element();
-  for (int color = 0; color < (1 << D); ++color) {
-    s.color_offsets.push_back(static_cast<std::int64_t>(s.chunk_start.size()));
+  int colors = 1;
+  for (int d = 0; d < D; ++d) colors *= 3;
+  for (int color = 0; color < colors; ++color) {
+    // a colour without chunks adds no (empty) range
+    if (s.color_offsets.empty() || s.color_offsets.back() != static_cast<std::int64_t>(s.chunk_start.size()))
+      s.color_offsets.push_back(static_cast<std::int64_t>(s.chunk_start.size()));
     for (std::int64_t k = 0; k < nblocks; ++k) {
       std::array<int, D> B;
       std::int64_t r = k;
-      int c = 0;
+      int c = 0, radix = 1;
       for (int d = 0; d < D; ++d) {
         B[d] = static_cast<int>(r % blocks[d]);
         r /= blocks[d];
-        c |= (B[d] % 2) << d;
+        const bool seam = m.periodic[d] && blocks[d] > 1 && blocks[d] % 2 == 1 && B[d] == blocks[d] - 1;
+        c += (seam ? 2 : B[d] % 2) * radix;
+        radix *= 3;
       }
       if (c != color) continue;
       const std::size_t first = s.element_cells.size();
@@ -204,7 +227,8 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
     }
   }
   s.chunk_start.push_back(static_cast<std::int64_t>(s.element_cells.size()));
-  s.color_offsets.push_back(static_cast<std::int64_t>(s.chunk_start.size()) - 1);
+  const std::int64_t chunks = static_cast<std::int64_t>(s.chunk_start.size()) - 1;
+  if (s.color_offsets.back() != chunks || s.color_offsets.size() == 1) s.color_offsets.push_back(chunks);
   return s;
 }
 
@@ -214,6 +238,7 @@ template <int D>
 std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::string& side) {
   const auto ds = side_of<D>(side);
   if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
+  if (s.periodic[ds[0]]) throw std::invalid_argument("solid: boundary '" + side + "' does not exist (its direction is periodic)");
   std::vector<std::int64_t> out;
   for (std::int64_t v = 0; v < s.nodes; ++v) {
     const auto I = s.lattice_index(v);
@@ -228,6 +253,7 @@ template <int D>
 std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::string& side) {
   const auto ds = side_of<D>(side);
   if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
+  if (s.periodic[ds[0]]) throw std::invalid_argument("solid: boundary '" + side + "' does not exist (its direction is periodic)");
   const int dir = ds[0], p = s.order, N = s.n1d;
   const int t0 = dir == 0 ? 1 : 0, t1 = D == 3 ? (dir == 2 ? 1 : 2) : -1;
   std::vector<std::int64_t> out;

@@ -12,23 +12,36 @@
 // nodes they touch (models/solid/discretization.hpp); the lattice's sides stay the named boundaries, each the
 // faces of active cells that lie on it. Graded lattice planes (`graded_planes`) put fine cells where the
 // stresses concentrate.
+//
+// Closed and curved bodies (issue 37's tyre): a lattice direction may be periodic (`periodic[d]`: its last
+// vertex plane is the first one again, the lattice closes on itself and that direction has no sides; at least
+// three cells), and an optional `map` sends the multilinear position to the body (the vertices are then in the
+// parameter space: an annulus is the rectangle [0, 2 pi] x [r_in, r_out] mapped by polar coordinates). Every node,
+// the GLL nodes inside the cells included, is placed by the map, so an order-p element represents the curved
+// boundary to O(h^(p+1)) (isoparametric) and not as a polygon.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace polymech::solid {
 
+// The map of a mapped lattice: parameter point xi (D values) -> body point x (D values).
+using MeshMap = std::function<void(const double* xi, double* x)>;
+
 template <int D>
 struct StructuredMesh {
   std::array<int, D> cells{};      // cells per lattice direction
-  std::vector<double> vertices;    // vertex_count x D, lattice order (direction 0 fastest)
+  std::vector<double> vertices;    // vertex_count x D, lattice order (direction 0 fastest); parameter space if map
   std::vector<char> active;        // cell_count flags in lattice order (non-zero: active); empty: every cell
+  std::array<bool, D> periodic{};  // closed directions: the last vertex plane is the first one again
+  MeshMap map;                     // empty: the vertices are the body's points
 
   std::int64_t vertex_count() const {
     std::int64_t n = 1;
@@ -191,6 +204,26 @@ inline StructuredMesh<2> make_cook_membrane(int n) {
         m.vertices[static_cast<std::size_t>(2 * m.vertex({i, j}) + d)] =
             w[0] * P[0][d] + w[1] * P[1][d] + w[2] * P[2][d] + w[3] * P[3][d];
     }
+  return m;
+}
+
+// A ring (2D) r_in <= r <= r_out: n_theta cells round (direction 0, periodic: no xmin / xmax) and n_r through
+// the wall (direction 1: ymin is the inner surface, ymax the outer one), centred at the origin; the lattice in
+// (theta, r) with the polar map, so every node lies on its circle. theta runs clockwise (x = r cos theta,
+// y = -r sin theta): with r as the second direction that keeps det J > 0.
+inline StructuredMesh<2> make_ring(double r_in, double r_out, int n_theta, int n_r) {
+  if (!(r_in > 0.0) || !(r_out > r_in)) throw std::invalid_argument("solid ring: need 0 < r_in < r_out");
+  if (n_theta < 3 || n_r < 1) throw std::invalid_argument("solid ring: need n_theta >= 3 and n_r >= 1");
+  const double two_pi = 6.28318530717958647692;
+  std::vector<double> theta(static_cast<std::size_t>(n_theta) + 1), r(static_cast<std::size_t>(n_r) + 1);
+  for (int i = 0; i <= n_theta; ++i) theta[static_cast<std::size_t>(i)] = two_pi * i / n_theta;
+  for (int j = 0; j <= n_r; ++j) r[static_cast<std::size_t>(j)] = r_in + (r_out - r_in) * j / n_r;
+  StructuredMesh<2> m = make_tensor_box<2>({theta, r});
+  m.periodic = {true, false};
+  m.map = [](const double* xi, double* x) {
+    x[0] = xi[1] * std::cos(xi[0]);
+    x[1] = -xi[1] * std::sin(xi[0]);
+  };
   return m;
 }
 
