@@ -10,7 +10,10 @@
 #include <functional>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 
+#include "io/dem_scene.hpp"
+#include "io/efg_scene.hpp"
 #include "io/helmholtz_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
@@ -40,11 +43,16 @@ Table read_csv(const fs::path& file) {
     while (std::getline(ss, cell, ',')) out.push_back(cell);
     return out;
   };
+  auto chomp = [](std::string& l) {  // the CSVs of Python's csv module end lines in \r\n
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+  };
   if (!std::getline(in, line)) throw PlanError(file.string() + ": empty");
+  chomp(line);
   t.columns = split(line);
   int n = 1;
   while (std::getline(in, line)) {
     ++n;
+    chomp(line);
     if (line.empty()) continue;
     const auto cells = split(line);
     if (cells.size() != t.columns.size())
@@ -103,11 +111,12 @@ std::vector<SweepPoint> group_points(const std::vector<SweepPoint>& points, doub
   return g;
 }
 
-// Index of the smallest error (the last one on ties: the finest run that reached it).
+// Index of the smallest error (the first one on ties: the coarsest run that reached it; finer runs with
+// the same error, as float's rounding of the DEM force gives, are a floor).
 std::size_t best_index(const std::vector<SweepPoint>& g) {
   std::size_t k = 0;
   for (std::size_t i = 1; i < g.size(); ++i)
-    if (g[i].error <= g[k].error) k = i;
+    if (g[i].error < g[k].error) k = i;
   return k;
 }
 
@@ -116,7 +125,33 @@ constexpr double min_rate = 0.2;
 
 }  // namespace
 
-std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points) {
+// time = offset + factor * estimate, least squares on the relative residual (offset >= 0).
+void fit_affine_time(const std::vector<double>& est, const std::vector<double>& sec, GroupModel& g) {
+  // minimise sum ((t0 + a e_i - t_i) / t_i)^2: normal equations in (t0, a) with weights 1 / t_i^2
+  double s00 = 0, s01 = 0, s11 = 0, r0 = 0, r1 = 0;
+  for (std::size_t i = 0; i < est.size(); ++i) {
+    const double w = 1.0 / (sec[i] * sec[i]);
+    s00 += w, s01 += w * est[i], s11 += w * est[i] * est[i], r0 += w * sec[i], r1 += w * est[i] * sec[i];
+  }
+  const double det = s00 * s11 - s01 * s01;
+  double t0 = det != 0 ? (r0 * s11 - r1 * s01) / det : 0.0;
+  double a = det != 0 ? (s00 * r1 - s01 * r0) / det : r1 / s11;
+  if (!(t0 >= 0) || !(a > 0)) {  // fall back to a pure ratio (or a pure offset)
+    t0 = 0.0;
+    a = r1 / s11;
+  }
+  g.time_offset = t0;
+  g.time_factor = a;
+  g.time_exponent = 1.0;
+  double r2 = 0;
+  for (std::size_t i = 0; i < est.size(); ++i) {
+    const double r = std::log((t0 + a * est[i]) / sec[i]);
+    r2 += r * r;
+  }
+  g.time_log_rms = std::sqrt(r2 / est.size());
+}
+
+std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points, bool affine_time) {
   std::vector<GroupModel> groups;
   for (const auto& p : points) {
     bool seen = false;
@@ -146,7 +181,9 @@ std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points) {
     std::vector<double> est, sec;
     for (const auto& q : pts)
       if (q.seconds > 0 && q.estimate > 0) est.push_back(q.estimate), sec.push_back(q.seconds);
-    if (est.size() >= 2) {
+    if (affine_time && est.size() >= 2) {
+      fit_affine_time(est, sec, g);
+    } else if (est.size() >= 2) {
       const PowerLaw t = fit_power_law(est, sec);
       g.time_factor = t.constant;
       g.time_exponent = t.rate;
@@ -181,7 +218,7 @@ std::vector<Candidate> predict(const std::vector<SweepPoint>& points, const std:
         c.predicted_error = env;
       }
       c.predicted_seconds =
-          pts[i].estimate > 0 ? g.time_factor * std::pow(pts[i].estimate, g.time_exponent) : pts[i].seconds;
+          pts[i].estimate > 0 ? g.time_offset + g.time_factor * std::pow(pts[i].estimate, g.time_exponent) : pts[i].seconds;
       out.push_back(c);
     }
   }
@@ -277,6 +314,10 @@ struct Case {
   std::function<double(const fs::path& scene, const Level&)> estimate;
   // sets a parsed scene to the level; returns the accuracy preset to run it with
   std::function<std::string(toml::table&, const Level&)> edit;
+  std::string dir;  // scenes/<dir>/<stem>.toml
+  std::vector<std::pair<std::string, double>> where;  // keep only the sweep rows with these column values
+  bool affine_time = false;  // the sweep timed whole processes (start-up included): t = t0 + a * estimate
+  std::string reference_note;  // where the error is not against an analytic reference
 };
 
 double one_thread(const CostEstimate& c) { return c.seconds * c.rate_threads; }
@@ -286,6 +327,51 @@ std::string precision(bool single) { return single ? "float" : "double"; }
 void set_accuracy(toml::table& t, const std::string& preset, double factor) {
   if (!t["accuracy"].is_table()) t.insert_or_assign("accuracy", toml::table{});
   t["accuracy"].as_table()->insert_or_assign(preset, factor);
+}
+
+// The scene edited to a level, in a temporary file (for the loaders whose cost estimate reads the knob
+// from the scene, not from an option); removed when it goes out of scope.
+struct EditedScene {
+  fs::path file;
+  EditedScene(const fs::path& scene, const std::function<std::string(toml::table&, const Level&)>& edit, const Level& l) {
+    toml::table t;
+    try {
+      t = toml::parse_file(scene.string());
+    } catch (const toml::parse_error& e) {
+      throw PlanError(scene.string() + ": " + std::string(e.description()));
+    }
+    edit(t, l);
+    static int serial = 0;
+    file = fs::temp_directory_path() /
+           ("polymech_plan_" + std::to_string(::getpid()) + "_" + std::to_string(serial++) + "_" + scene.filename().string());
+    std::ofstream(file) << t << "\n";
+  }
+  ~EditedScene() {
+    std::error_code ec;
+    fs::remove(file, ec);
+  }
+};
+
+toml::table& section(toml::table& t, const char* name) {
+  if (!t[name].is_table()) t.insert_or_assign(name, toml::table{});
+  return *t[name].as_table();
+}
+
+// The EFG static crack (tools/plot_efg_accuracy_cost.py): h_min and h_max scaled together, Gauss points per cell.
+std::string edit_efg(toml::table& t, const Level& l) {
+  auto& d = section(t, "discretization");
+  const double h_min = d["h_min"].value<double>().value_or(l.resolution);
+  const double h_max = d["h_max"].value<double>().value_or(4 * l.resolution);
+  d.insert_or_assign("h_min", l.resolution);
+  d.insert_or_assign("h_max", l.resolution * h_max / h_min);
+  d.insert_or_assign("gauss", static_cast<int64_t>(l.order));
+  return "";  // the scene's default preset, as the sweep ran it
+}
+
+// The DEM impacts (bench/sweep_dem_impacts.py): steps per Hertz contact time.
+std::string edit_dem(toml::table& t, const Level& l) {
+  section(t, "time").insert_or_assign("steps_per_contact", l.resolution);
+  return "";  // dem_benchmark has no presets
 }
 
 const std::vector<Case>& cases() {
@@ -316,7 +402,11 @@ const std::vector<Case>& cases() {
        [](toml::table& t, const Level& l) {
          set_accuracy(t, "draft", l.resolution);
          return std::string("draft");
-       }},
+       },
+       "mps",
+       {},
+       false,
+       ""},
       {"Helmholtz FEM",
        "helmholtz",
        "helmholtz",
@@ -356,7 +446,11 @@ const std::vector<Case>& cases() {
          if (l.single) t["solver"].as_table()->insert_or_assign("tolerance", 1e-6);
          set_accuracy(t, "paper", 1.0);
          return std::string("paper");
-       }},
+       },
+       "helmholtz",
+       {},
+       false,
+       ""},
       {"PD tension",
        "nosb_pd",
        "pd_tension",
@@ -383,9 +477,66 @@ const std::vector<Case>& cases() {
          t["discretization"].as_table()->insert_or_assign("horizon_ratio", l.order);
          set_accuracy(t, "draft", l.resolution);
          return std::string("draft");
-       }},
+       },
+       "pd",
+       {},
+       false,
+       ""},
+      {"EFG static crack",
+       "efg",
+       "efg",
+       {"edge_crack_static"},
+       "docs/figures/efg/accuracy_cost.csv",
+       "/usr/bin/python3 tools/plot_efg_accuracy_cost.py --app build/release/bin/efg --out docs/figures/efg",
+       "h_min_m",
+       "h_min_m",
+       "gauss",
+       "is_float",
+       "wall_seconds",
+       "",
+       "h_min [m]",
+       "Gauss points per cell side",
+       {{"kI", "sif_error", "sif_error", "K_I, mean of the J paths (relative error against the handbook)"}},
+       [](const fs::path& f, const Level& l) {
+         const EditedScene e(f, edit_efg, l);
+         return one_thread(load_efg_scene(e.file, {"", precision(l.single)}).cost);
+       },
+       edit_efg,
+       "efg",
+       {{"support_factor", 1.5}},
+       false,
+       ""},
+      {"DEM impact",
+       "dem",
+       "dem_benchmark",
+       {"chung_ooi_test1"},
+       "docs/figures/dem/impacts_accuracy_cost.csv",
+       "/usr/bin/python3 bench/sweep_dem_impacts.py --app build/release/bin/dem_benchmark --out docs/figures/dem",
+       "steps_per_contact",
+       "",  // h = 1 / steps per contact (the time step over the contact time)
+       "",
+       "precision_bits",
+       "test1_cpu_seconds",
+       "",
+       "steps per contact",
+       "",
+       {{"force", "test1_max_force_error", "test1_max_force_error",
+         "largest contact force, two spheres head on (relative error against Hertz)"}},
+       [](const fs::path& f, const Level& l) {
+         const EditedScene e(f, edit_dem, l);
+         return one_thread(load_dem_scene(e.file, {"", precision(l.single)}).cost);
+       },
+       edit_dem,
+       "dem",
+       {},
+       true,
+       ""},
   };
   return c;
+}
+
+std::string scene_dir(const Case& cs) {
+  return !cs.dir.empty() ? cs.dir : cs.kind == "nosb_pd" ? "pd" : cs.kind == "mps_elastic" ? "mps" : cs.kind;
 }
 
 std::string expand(std::string s, const std::string& stem) {
@@ -404,7 +555,30 @@ const Case* find_case(const std::string& kind, const std::string& stem) {
   return nullptr;
 }
 
-Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, const fs::path& root, const std::string& quantity) {
+// A CSV of text cells (the overhead table names apps and scenes).
+struct TextTable {
+  std::vector<std::vector<std::string>> rows;
+};
+TextTable read_csv_text(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw PlanError(file.string() + ": cannot read");
+  TextTable t;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    t.rows.push_back(cells);
+  }
+  return t;
+}
+
+Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, const fs::path& root, const std::string& quantity,
+               bool with_overhead = true) {
   Model m;
   m.method = cs.name;
   m.app = cs.app;
@@ -432,14 +606,20 @@ Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, c
   const int res = col(cs.resolution_column), h = col(cs.h_column), ord = col(cs.order_column),
             prec = col(cs.precision_column), tm = col(cs.time_column), st = col(cs.steps_column), err = col(q->column);
   const int status = t.column("status");  // Helmholtz: 0 = converged
+  std::vector<std::pair<int, double>> where;
+  for (const auto& [name, value] : cs.where) where.emplace_back(col(name), value);
+  const bool bits = cs.precision_column == "precision_bits";  // 32 / 64 (else a 0/1 is_float)
   std::vector<SweepPoint> pts;
   for (const auto& r : t.rows) {
     if (status >= 0 && r[status] != 0) continue;
+    bool keep = true;
+    for (const auto& [k, v] : where) keep = keep && r[k] == v;
+    if (!keep) continue;
     SweepPoint p;
     p.resolution = r[res];
-    p.h = r[h];
+    p.h = h >= 0 ? r[h] : 1.0 / r[res];
     p.order = ord >= 0 ? r[ord] : 0.0;
-    p.single = prec >= 0 && r[prec] != 0;
+    p.single = prec >= 0 && (bits ? r[prec] == 32 : r[prec] != 0);
     p.error = std::abs(r[err]);
     p.seconds = r[tm];
     p.steps = st >= 0 ? static_cast<std::int64_t>(r[st]) : 0;
@@ -448,8 +628,29 @@ Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, c
     pts.push_back(p);
   }
   if (pts.empty()) throw PlanError((root / m.csv).string() + ": no sweep point with a finite " + q->column);
-  m.groups = fit_groups(pts);
+  m.groups = fit_groups(pts, cs.affine_time);
   m.candidates = predict(pts, m.groups);
+  m.reference_note = cs.reference_note;
+  if (with_overhead) {
+    // the app's fixed cost, measured against this model by `polymech plan --measure-overhead`
+    const fs::path oh = root / overhead_csv();
+    if (fs::exists(oh)) {
+      // per app (start-up and output are the app's): the row whose cheapest run the model times least,
+      // so the sweep's own timing noise (wall times on a shared machine) disturbs it least
+      const TextTable o = read_csv_text(oh);
+      double least = INFINITY;
+      for (const auto& r : o.rows)
+        if (r.size() >= 7 && r[0] == cs.app) {
+          const double model_seconds = std::strtod(r[4].c_str(), nullptr);
+          if (model_seconds < least) {
+            least = model_seconds;
+            m.overhead_seconds = std::max(0.0, std::strtod(r[6].c_str(), nullptr));
+            m.overhead_source = overhead_csv() + std::string(", ") + r[1];
+          }
+        }
+    }
+    for (auto& c : m.candidates) c.predicted_seconds += m.overhead_seconds;
+  }
   return m;
 }
 
@@ -482,7 +683,7 @@ std::vector<std::string> planned_cases() {
   return out;
 }
 
-Model build_model(const fs::path& scene, const std::string& quantity) {
+Model build_model(const fs::path& scene, const std::string& quantity, bool with_overhead) {
   const std::string kind = scene_kind(scene);
   const std::string stem = scene.stem().string();
   const Case* cs = find_case(kind, stem);
@@ -492,18 +693,27 @@ Model build_model(const fs::path& scene, const std::string& quantity) {
     throw PlanError(scene.string() + ": no accuracy-cost sweep data for this scene (kind '" + kind +
                     "'), so no error model to plan from; scenes with sweep data:" + known);
   }
-  return model_of(*cs, scene, stem, source_dir(scene), quantity);
+  return model_of(*cs, scene, stem, source_dir(scene), quantity, with_overhead);
+}
+
+std::vector<fs::path> overhead_scenes(const fs::path& root) {
+  std::vector<fs::path> out;
+  for (const auto& cs : cases())
+    for (const auto& stem : cs.scenes) {
+      const fs::path scene = root / "scenes" / scene_dir(cs) / (stem + ".toml");
+      if (fs::exists(root / expand(cs.csv, stem)) && fs::exists(scene)) out.push_back(scene);
+    }
+  return out;
 }
 
 std::string fit_report(const fs::path& root) {
   std::ostringstream s;
   s << "| case | quantity | " << "order | precision | points | rate | constant | log rms | bound | floor | time factor | "
-       "time exponent | time log rms |\n";
-  s << "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+       "time exponent | time log rms | time offset |\n";
+  s << "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (const auto& cs : cases())
     for (const auto& stem : cs.scenes) {
-      const fs::path scene = root / "scenes" / (cs.kind == "nosb_pd" ? "pd" : cs.kind == "mps_elastic" ? "mps" : cs.kind) /
-                             (stem + ".toml");
+      const fs::path scene = root / "scenes" / scene_dir(cs) / (stem + ".toml");
       if (!fs::exists(root / expand(cs.csv, stem)) || !fs::exists(scene)) continue;
       for (const auto& q : cs.quantities) {
         const Model m = model_of(cs, scene, stem, root, q.key);
@@ -513,7 +723,7 @@ std::string fit_report(const fs::path& root) {
             << (g.converges ? number(g.fit.rate) : "no convergence") << " | " << number(g.fit.constant) << " | "
             << number(g.fit.log_rms) << " | " << (g.converges ? number(g.bound) : "envelope") << " | "
             << (g.floor > 0 ? number(g.floor) : "-") << " | " << number(g.time_factor) << " | " << number(g.time_exponent) << " | " << number(g.time_log_rms)
-            << " |\n";
+            << " | " << (g.time_offset > 0 ? number(g.time_offset) : "-") << " |\n";
       }
     }
   return s.str();
@@ -540,9 +750,9 @@ std::vector<std::string> run_arguments(const Model& model, const fs::path& scene
     f << "# " << scene.string() << " as planned by `polymech plan` (" << describe_candidate(model, c) << ")\n" << t << "\n";
     if (!f) throw PlanError(planned.string() + ": cannot write");
   }
-  std::vector<std::string> a = {"--scene", planned.string(), "--out",        out.string(),
-                                "--accuracy", preset,       "--precision", precision(c.point.single),
+  std::vector<std::string> a = {"--scene", planned.string(), "--out", out.string(), "--precision", precision(c.point.single),
                                 "--threads", std::to_string(threads), "--quiet"};
+  if (!preset.empty()) a.insert(a.begin() + 4, {"--accuracy", preset});
   if (c.point.steps > 0) a.insert(a.end(), {"--steps", std::to_string(c.point.steps)});
   return a;
 }
@@ -560,7 +770,12 @@ std::string describe_plan(const Model& model, const Plan& plan, double target) {
   std::ostringstream s;
   s << "[plan] " << model.method << ": " << model.quantity_text << ", target " << number(target) << "\n";
   s << "  error model: fitted to " << model.csv.string() << " (" << model.sweep_command << ")\n";
-  s << "  time model: a * (the scene loader's cost estimate)^b fitted to the sweep's measured CPU times, one thread\n";
+  s << "  time model: a * (the scene loader's cost estimate)^b fitted to the sweep's measured times, one thread";
+  if (model.overhead_seconds > 0)
+    s << ", plus the app's fixed cost " << number(model.overhead_seconds) << " s (" << model.overhead_source
+      << ", polymech plan --measure-overhead)";
+  s << "\n";
+  if (!model.reference_note.empty()) s << "  reference: " << model.reference_note << "\n";
   if (!plan.refused) {
     s << "  choice: " << describe_candidate(model, plan.choice) << "\n";
     s << "  predicted error " << number(plan.choice.predicted_error) << " (measured in the sweep "

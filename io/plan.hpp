@@ -62,6 +62,9 @@ struct GroupModel {
   double time_factor = 1.0;
   double time_exponent = 1.0;
   double time_log_rms = 0.0;  // rms of log(measured / model)
+  // > 0 where the sweep timed whole processes (start-up included: DEM): measured = time_offset +
+  // time_factor * estimate, least squares on the relative residual (time_exponent 1)
+  double time_offset = 0.0;
   int points = 0;
 };
 
@@ -84,14 +87,20 @@ struct Model {
   std::filesystem::path csv;  // the sweep data, relative to the source folder
   std::string sweep_command;  // how the CSV is made
   std::vector<GroupModel> groups;
-  std::vector<Candidate> candidates;
+  std::vector<Candidate> candidates;  // predicted_seconds include overhead_seconds
+  // the app's fixed cost that the sweep's model-only times leave out (start-up, scene load, output),
+  // measured by `polymech plan --measure-overhead` into overhead_csv(); 0 where none is committed
+  double overhead_seconds = 0.0;
+  std::string overhead_source;
+  // where the quantity has no analytic reference: the sweep's errors are against a Richardson extrapolation
+  std::string reference_note;
 };
 
 // Groups sweep points by (order, precision) and fits each (error model: power law over the points up to
 // the group's smallest error, floor where finer points stop improving, monotone envelope where the error
 // does not fall; time model: the estimate's ratio to the measured time). Candidates are the sweep's
 // points with their predictions.
-std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points);
+std::vector<GroupModel> fit_groups(const std::vector<SweepPoint>& points, bool affine_time = false);
 std::vector<Candidate> predict(const std::vector<SweepPoint>& points, const std::vector<GroupModel>& groups);
 
 struct Plan {
@@ -114,7 +123,12 @@ std::vector<std::string> planned_cases();
 
 // The model of `scene`'s quantity (default: the case's first); PlanError if the scene's case has no
 // sweep data or the quantity is unknown.
-Model build_model(const std::filesystem::path& scene, const std::string& quantity = "");
+// with_overhead false: the sweep's times alone (what --measure-overhead compares a whole run with).
+Model build_model(const std::filesystem::path& scene, const std::string& quantity = "", bool with_overhead = true);
+
+// The committed app overheads (relative to the source folder) and one scene of every case (to measure them).
+inline const char* overhead_csv() { return "docs/figures/plan/app_overhead.csv"; }
+std::vector<std::filesystem::path> overhead_scenes(const std::filesystem::path& root);
 
 // A table (markdown) of every case's fitted models: rate, constant, floor, time factor per group.
 std::string fit_report(const std::filesystem::path& root);

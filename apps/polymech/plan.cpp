@@ -10,11 +10,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "apps/common/app.hpp"
@@ -69,6 +71,50 @@ nlohmann::json candidate_json(const pl::Model& m, const pl::Candidate& c) {
   return j;
 }
 
+// `--measure-overhead`: for one scene of every case, runs the app on the model's cheapest candidate
+// `repeat` times and writes, per scene, the median CPU time of the whole process against the model's
+// prediction from the sweep's times; the difference (>= 0) is the app's fixed cost (Kokkos start-up,
+// scene load, output) that the sweeps' model-only times leave out. The plan adds it to every prediction.
+int measure_overhead(const fs::path& root, const fs::path& self_dir, const fs::path& out, int repeat) {
+  const fs::path csv = root / pl::overhead_csv();
+  fs::create_directories(csv.parent_path());
+  std::ostringstream rows;
+  rows << "app,scene,setting,runs,model_seconds,median_cpu_seconds,overhead_seconds\n";
+  for (const auto& scene : pl::overhead_scenes(root)) {
+    const pl::Model m = pl::build_model(scene, "", false);
+    const pl::Candidate* cheapest = nullptr;
+    for (const auto& c : m.candidates)
+      if (!c.beyond_floor && (!cheapest || c.predicted_seconds < cheapest->predicted_seconds)) cheapest = &c;
+    if (!cheapest) continue;
+    const fs::path dir = out / ("overhead_" + scene.stem().string());
+    const auto args = pl::run_arguments(m, scene, *cheapest, dir, 1);
+    std::vector<double> cpu;
+    for (int k = 0; k < repeat; ++k) {
+      const ChildRun r = run_child((self_dir / m.app).string(), args);
+      if (r.rc != 0) throw std::runtime_error(m.app + " on " + (dir / "plan_scene.toml").string() + " failed (exit " + std::to_string(r.rc) + ")");
+      cpu.push_back(r.cpu);
+    }
+    std::sort(cpu.begin(), cpu.end());
+    const double median = cpu[cpu.size() / 2];
+    const double overhead = std::max(0.0, median - cheapest->predicted_seconds);
+    std::string setting = pl::describe_candidate(m, *cheapest);
+    for (auto& ch : setting)
+      if (ch == ',') ch = ';';
+    char line[512];
+    std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.6g,%.6g,%.6g\n", m.app.c_str(), scene.stem().string().c_str(), setting.c_str(),
+                  repeat, cheapest->predicted_seconds, median, overhead);
+    rows << line;
+    std::printf("[plan] %s %s (%s): model %.3g s, whole run %.3g s CPU (median of %d): overhead %.3g s\n", m.app.c_str(),
+                scene.stem().string().c_str(), setting.c_str(), cheapest->predicted_seconds, median, repeat, overhead);
+    std::fflush(stdout);
+  }
+  std::ofstream f(csv);
+  f << rows.str();
+  if (!f) throw std::runtime_error(csv.string() + ": cannot write");
+  std::printf("[plan] wrote %s\n", csv.string().c_str());
+  return 0;
+}
+
 }  // namespace
 
 int plan_main(int argc, char** argv, const fs::path& self_dir) {
@@ -78,7 +124,8 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
   double target = 0.0;
   std::string quantity;
   int threads = 1;
-  bool run = false, report = false;
+  bool run = false, report = false, overhead = false;
+  int repeat = 3;
   app.add_option("--scene", scene, "scene file (TOML) whose case has a committed accuracy-cost sweep");
   app.add_option("--target-error", target, "the largest acceptable relative error of the quantity")
       ->check(CLI::PositiveNumber);
@@ -87,6 +134,10 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
       ->check(CLI::Range(1, 4096));
   app.add_option("--out", out, "output folder of --run")->capture_default_str();
   app.add_flag("--run", run, "run the chosen case and write plan.json (prediction and achievement) in --out");
+  app.add_flag("--measure-overhead", overhead,
+               "run every case's app on its cheapest sweep point (--repeat times, one thread) and write the app's fixed "
+               "cost over the sweep's model time to docs/figures/plan/app_overhead.csv");
+  app.add_option("--repeat", repeat, "runs per scene of --measure-overhead (the median is kept)")->check(CLI::Range(1, 99));
   app.add_flag("--fit-report", report, "print the fitted models of every case with sweep data (markdown) and stop");
   try {
     app.parse(argc, argv);
@@ -100,6 +151,7 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
         std::printf("%s", pl::fit_report(pl::source_dir(scene.empty() ? fs::path(".") : scene)).c_str());
         return 0;
       }
+      if (overhead) return measure_overhead(pl::source_dir(scene.empty() ? fs::path(".") : scene), self_dir, out, repeat);
       if (scene.empty()) throw std::invalid_argument("give --scene FILE (and --target-error E)");
       if (!(target > 0)) throw std::invalid_argument("give --target-error E (a relative error > 0, e.g. 0.01)");
       if (!fs::is_regular_file(scene)) throw std::invalid_argument("--scene " + scene.string() + ": scene file not found");
@@ -127,6 +179,8 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
       j["quantity_text"] = model.quantity_text;
       j["target_error"] = target;
       j["sweep_data"] = model.csv.string();
+      j["overhead_seconds"] = model.overhead_seconds;
+      if (!model.reference_note.empty()) j["reference"] = model.reference_note;
       j["choice"] = candidate_json(model, plan.choice);
       nlohmann::json pareto = nlohmann::json::array();
       for (const auto& c : plan.pareto) pareto.push_back(candidate_json(model, c));

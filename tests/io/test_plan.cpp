@@ -131,3 +131,38 @@ TEST(Plan, SceneWithoutSweepDataSaysSo) {
   }
   EXPECT_THROW(pl::build_model(source() / "scenes/helmholtz/cube.toml", "no_such_quantity"), pl::PlanError);
 }
+
+TEST(Plan, DemAndEfgFitsReproduceTheirSweeps) {
+  // DEM, two spheres head on: the force error falls as (1 / steps per contact)^2 in double; float stops at
+  // its rounding (1.43e-6 from 400 steps per contact on); the sweep timed whole processes, so the time model
+  // has a start-up offset (tens of ms at most)
+  const pl::Model dem = pl::build_model(source() / "scenes/dem/chung_ooi_test1.toml");
+  ASSERT_EQ(dem.groups.size(), 2u);
+  for (const auto& g : dem.groups) {
+    EXPECT_TRUE(g.converges);
+    EXPECT_GT(g.time_offset, 1e-3);
+    EXPECT_LT(g.time_offset, 0.1);
+    if (g.single) {
+      EXPECT_GT(g.floor, 1e-6);
+      EXPECT_LT(g.floor, 2e-6);
+    } else {
+      EXPECT_NEAR(g.fit.rate, 2.0, 0.35);
+    }
+  }
+  for (const auto& c : dem.candidates)
+    if (!c.beyond_floor) {
+      EXPECT_GE(c.predicted_error, c.point.error * (1 - 1e-12)) << pl::describe_candidate(dem, c);
+    }
+  EXPECT_TRUE(pl::choose(dem, 1e-10).refused);
+  // EFG edge crack, support factor 1.5: K_I converges at about first order in h_min in double
+  const pl::Model efg = pl::build_model(source() / "scenes/efg/edge_crack_static.toml");
+  for (const auto& g : efg.groups)
+    if (!g.single) {
+      EXPECT_TRUE(g.converges);
+      EXPECT_GT(g.fit.rate, 0.8);
+      EXPECT_LT(g.fit.rate, 1.6);
+    }
+  const pl::Plan p = pl::choose(efg, 0.01);
+  ASSERT_FALSE(p.refused);
+  EXPECT_LE(p.choice.point.error, 0.01);
+}
