@@ -65,6 +65,8 @@ class ContactPairs {
   // One set, points of different sizes (sphere radii): a pair is listed within sizes_i + sizes_j + skin
   // (each <= radius / 2) rather than radius + skin: fewer pairs to test each step, the same contacts.
   void set_sizes(const View1<T>& sizes) { sizes_ = sizes; }
+  // Rows of at most `capacity` pairs are found in one search pass (NeighborSearch::set_row_capacity).
+  void set_row_capacity(int capacity) { search_.set_row_capacity(capacity); }
 
   // One set: pairs among the points x. Returns true when the list was rebuilt.
   bool update(const VecView<T, D>& x) { return update_impl(x, x, false); }

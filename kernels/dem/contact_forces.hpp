@@ -81,6 +81,7 @@ KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Inde
   const Index np = static_cast<Index>(pc.planes.extent(0));
   const std::uint32_t bits = pc.near.extent(0) == 0 ? ~std::uint32_t(0) : pc.near(i);
   if (bits == 0) return;
+  const HertzMindlin<T> law = pc.law;  // a local: stores to hist cannot change it
   for (Index q = 0; q < np; ++q) {
     if (!((bits >> q) & 1u)) continue;
     const Offset k = static_cast<Offset>(i) * np + q;
@@ -94,7 +95,7 @@ KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Inde
     }
     const Vec3<T> v_rel = v + cross(w, (-r) * n);
     Vec3<T> xi = spring(pc.hist, k, friction);
-    const auto c = hertz_mindlin_force(pc.law, r, m, delta, n, v_rel, friction, dt, xi);
+    const auto c = hertz_mindlin_force(law, r, m, delta, n, v_rel, friction, dt, xi);
     if (friction) store<3>(pc.hist, k, xi);
     f_sum += c.force;
     t_sum -= r * cross(n, c.force);
@@ -118,6 +119,10 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
   const bool walls = planes.planes.extent(0) > 0;
   Kokkos::parallel_for(
       "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+        // the law and dt as locals: the captured copies are doubles in the closure, which the stores to
+        // hist and pair_load may alias for the compiler (it would load them again after every store)
+        const HertzMindlin<T> law = p;
+        const T h = dt;
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
         const int body_i = clumped ? s.body(i) : -1;
@@ -142,7 +147,7 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
           const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
           const T mj = s.mass(j);
           Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(p, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, dt, xi);
+          const auto c = hertz_mindlin_force(law, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, h, xi);
           if (friction) store<3>(hist, k, xi);
           const Vec3<T> nxf = cross(n, c.force);
           f_sum += c.force;
@@ -152,7 +157,7 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
             pair_load(k, 3 + q) = -lj * nxf[q];
           }
         }
-        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, dt, f_sum, t_sum);
+        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, h, f_sum, t_sum);
         const T inv_inertia = T(2.5) / (mi * ri * ri);
         for (int q = 0; q < 3; ++q) {
           s.a(i, q) += f_sum[q] / mi;
@@ -181,13 +186,21 @@ void sphere_sphere_gather(const SphereSet<T>& s, const neighbors::ListTranspose&
         }
         const T mj = s.mass(j), rj = s.radius(j);
         const T inv_inertia = T(2.5) / (mj * rj * rj);
+        Vec3<T> aj = load<3>(s.a, j), alphaj = load<3>(s.alpha, j);
         for (int q = 0; q < 3; ++q) {
-          s.a(j, q) += f_sum[q] / mj;
-          s.alpha(j, q) += inv_inertia * t_sum[q];
-          if (kick) {
-            s.v(j, q) += h * s.a(j, q);
-            s.omega(j, q) += h * s.alpha(j, q);
+          aj[q] += f_sum[q] / mj;
+          alphaj[q] += inv_inertia * t_sum[q];
+        }
+        store<3>(s.a, j, aj);
+        store<3>(s.alpha, j, alphaj);
+        if (kick) {
+          Vec3<T> vj = load<3>(s.v, j), wj = load<3>(s.omega, j);
+          for (int q = 0; q < 3; ++q) {
+            vj[q] += h * aj[q];
+            wj[q] += h * alphaj[q];
           }
+          store<3>(s.v, j, vj);
+          store<3>(s.omega, j, wj);
         }
       });
 }

@@ -91,20 +91,31 @@ T kick_drift_start(const SphereSet<T>& s, T h, T dt, const Vec3<T>& g, const Vec
   Kokkos::parallel_reduce(
       "polymech::dem::kick_drift", range(s.size()),
       KOKKOS_LAMBDA(const Index i, T& m) {
-        T d2 = T(0);
+        // whole spheres in registers: every View is read once and written once (the Views may alias for
+        // the compiler, so a component written and read again would be loaded again)
+        Vec3<T> vi = load<3>(v, i), wi = load<3>(omega, i), ui = load<3>(u, i), xi;
+        const Vec3<T> ai = load<3>(a, i), alphai = load<3>(alpha, i), x0i = load<3>(x0, i);
         for (int k = 0; k < 3; ++k) {
-          v(i, k) += h * a(i, k);
-          omega(i, k) += h * alpha(i, k);
-          u(i, k) += dt * v(i, k);
-          x(i, k) = x0(i, k) + u(i, k);
-          a(i, k) = g[k];
-          alpha(i, k) = T(0);
-          if (check) {
-            const T d = x(i, k) - x_build(i, k);
+          vi[k] += h * ai[k];
+          wi[k] += h * alphai[k];
+          ui[k] += dt * vi[k];
+          xi[k] = x0i[k] + ui[k];
+        }
+        store<3>(v, i, vi);
+        store<3>(omega, i, wi);
+        store<3>(u, i, ui);
+        store<3>(x, i, xi);
+        store<3>(a, i, g);
+        store<3>(alpha, i, Vec3<T>::zero());
+        if (check) {
+          const Vec3<T> xb = load<3>(x_build, i);
+          T d2 = T(0);
+          for (int k = 0; k < 3; ++k) {
+            const T d = xi[k] - xb[k];
             d2 += d * d;
           }
+          m = d2 > m ? d2 : m;
         }
-        m = d2 > m ? d2 : m;
       },
       Kokkos::Max<T>(m2));
   return kx::sqrt(m2);

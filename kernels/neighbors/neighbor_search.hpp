@@ -88,23 +88,30 @@ struct OtherQueries {
 
 // The rows of `out` for n queries against the binned points: count, scan, fill. With `sizes` (one set
 // only: sizes of the points), a pair is listed only within sizes(i) + sizes(j) + margin (<= radius).
+// With a scratch of `capacity` entries per row, the count pass keeps each row's first `capacity`
+// neighbours and the fill copies them (a row that has more is searched again): one search, not two,
+// for short rows (the DEM's sphere pairs), the same list.
 template <class T, int D, class Queries>
 void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Queries& queries, Index n, T radius,
-               bool half, NeighborList& out, const View1<T>& sizes = View1<T>(), T margin = T(0)) {
+               bool half, NeighborList& out, const View1<T>& sizes = View1<T>(), T margin = T(0),
+               const Kokkos::View<Index*, MemSpace>& scratch = Kokkos::View<Index*, MemSpace>(), int capacity = 0) {
   if (out.offsets.extent(0) < static_cast<std::size_t>(n) + 1)
     out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::offsets", static_cast<std::size_t>(n) + 1);
   const T radius2 = radius * radius;
   const bool sized = sizes.extent(0) > 0;
+  const Offset cap = scratch.extent(0) >= static_cast<std::size_t>(n) * static_cast<std::size_t>(capacity) ? capacity : 0;
   auto offsets = out.offsets;
   Kokkos::parallel_for(
       "polymech::neighbors::count", range(n), KOKKOS_LAMBDA(const Index i) {
         Offset count = 0;
         const T si = sized ? sizes(i) + margin : T(0);
+        const Offset row = static_cast<Offset>(i) * cap;
         for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index j, T r2) {
           if (sized) {
             const T c = si + sizes(j);
             if (r2 > c * c) return;
           }
+          if (count < cap) scratch(row + count) = j;
           ++count;
         });
         offsets(i + 1) = count;
@@ -115,6 +122,11 @@ void list_rows(const CellGrid<T, D>& grid, const VecView<T, D>& points, const Qu
   Kokkos::parallel_for(
       "polymech::neighbors::fill", range(n), KOKKOS_LAMBDA(const Index i) {
         Offset slot = offsets(i);
+        if (offsets(i + 1) - slot <= cap) {  // the row is in the scratch
+          const Offset row = static_cast<Offset>(i) * cap;
+          for (Offset m = 0; slot < offsets(i + 1); ++m) neighbors(slot++) = scratch(row + m);
+          return;
+        }
         const T si = sized ? sizes(i) + margin : T(0);
         for_each_point_near<T, D>(grid, points, queries.position(i), queries.self(i), radius2, half, [&](Index j, T r2) {
           if (sized) {
@@ -142,8 +154,11 @@ class NeighborSearch {
   void build(const VecView<T, D>& x, T radius, ListKind kind, NeighborList& out, const View1<T>& sizes = View1<T>(),
              T margin = T(0)) {
     bin_particles<T, D>(grid_, x, radius);
+    const auto need = x.extent(0) * static_cast<std::size_t>(row_capacity_);
+    if (scratch_.extent(0) < need)
+      scratch_ = Kokkos::View<Index*, MemSpace>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::neighbors::row_scratch")), need);
     detail::list_rows<T, D>(grid_, x, detail::SelfQueries<T, D>{x}, static_cast<Index>(x.extent(0)), radius,
-                            kind == ListKind::half, out, sizes, margin);
+                            kind == ListKind::half, out, sizes, margin, scratch_, row_capacity_);
     out.kind = kind;
   }
 
@@ -158,9 +173,14 @@ class NeighborSearch {
   }
 
   const CellGrid<T, D>& grid() const { return grid_; }
+  // build() keeps up to `capacity` neighbours per row from its count pass (capacity x points indices of
+  // scratch): rows no longer than that are not searched twice. 0 (the default): no scratch.
+  void set_row_capacity(int capacity) { row_capacity_ = capacity > 0 ? capacity : 0; }
 
  private:
   CellGrid<T, D> grid_;
+  int row_capacity_ = 0;
+  Kokkos::View<Index*, MemSpace> scratch_;
 };
 
 // Reference-configuration bond family: the neighbours within `radius` of the initial positions.

@@ -75,6 +75,7 @@ class Dem {
     pw_ = law(p, w, beta, mu);
     allocate_spheres();
     pairs_.set_sizes(s_.radius);  // sphere pairs within r_i + r_j + skin (LIGGGHTS' rule), not 2 r_max + skin
+    pairs_.set_row_capacity(16);  // a half row holds a sphere's few larger-index neighbours: one search per build
     if (clumps_) allocate_clumps();
     allocate_planes();
     if (surfaces_) allocate_surface();

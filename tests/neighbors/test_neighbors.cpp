@@ -170,6 +170,48 @@ TEST(NeighborSearch, ParticlesOnTheBoundingBoxBoundary) {
   expect_matches_brute_force<3>(p3, 1.0);
 }
 
+// Points of different sizes (the DEM's sphere radii): a pair is listed within s_i + s_j + margin only;
+// with a row scratch (one search pass for short rows, longer rows searched again) the same list.
+TEST(NeighborSearch, SizedPairsAndRowScratchMatchBruteForce) {
+  const auto p = random_cloud<3>(400, 0.5, 11);  // about 7 neighbours a row: capacities 1 and 4 overflow, 64 holds
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(0.02, 0.05);
+  std::vector<double> size(p.size());
+  for (auto& v : size) v = u(gen);
+  const double margin = 0.01, radius = 2 * 0.05 + margin;
+  pm::View1<double> sizes("sizes", p.size());
+  auto hs = Kokkos::create_mirror_view(sizes);
+  for (std::size_t i = 0; i < p.size(); ++i) hs(i) = size[i];
+  Kokkos::deep_copy(sizes, hs);
+  auto x = to_device<3>(p);
+  for (const int capacity : {0, 1, 4, 64})
+    for (auto kind : {nb::ListKind::full, nb::ListKind::half}) {
+      const bool half = kind == nb::ListKind::half;
+      nb::NeighborSearch<double, 3> search;
+      search.set_row_capacity(capacity);
+      nb::NeighborList list;
+      search.build(x, radius, kind, list, sizes, margin);
+      const auto rows = to_rows(list);
+      std::size_t pairs = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        std::vector<int> ref;
+        for (std::size_t j = 0; j < p.size(); ++j) {
+          if (i == j || (half && j < i)) continue;
+          double d2 = 0;
+          for (int k = 0; k < 3; ++k) d2 += (p[j][k] - p[i][k]) * (p[j][k] - p[i][k]);
+          const double c = size[i] + size[j] + margin;
+          if (d2 <= c * c) ref.push_back(static_cast<int>(j));
+        }
+        auto r = rows[i];
+        std::sort(r.begin(), r.end());
+        ASSERT_EQ(r, ref) << "particle " << i << ", capacity " << capacity << (half ? " (half)" : " (full)");
+        pairs += r.size();
+      }
+      EXPECT_EQ(static_cast<std::size_t>(list.num_pairs), pairs);
+      EXPECT_GT(pairs, 2 * p.size() / (half ? 2 : 1));  // rows of several pairs
+    }
+}
+
 TEST(NeighborSearch, RebuildReusesStorageAndGivesSameList) {
   auto p = random_cloud<2>(800, 1.0, 17);
   auto x = to_device<2>(p);
