@@ -15,14 +15,15 @@ namespace polymech::io {
 
 namespace {
 
+// The app of a scene is read off its text, without the loader (which checks the stability limits with the
+// models' kernels, so it needs Kokkos): the app then loads and checks the whole scene itself (issue 32).
 std::string mps_app(const std::filesystem::path& file) {
-  const auto s = load_mps_elastic_scene(file);
-  return s.config.crack.mode == mps_elastic::CrackMode::none ? "mps_point_source" : "mps_harmonics";
+  return Scene::load(file).root().optional_table("crack") ? "mps_harmonics" : "mps_point_source";
 }
 
 std::string pd_app(const std::filesystem::path& file) {
-  const auto s = load_nosb_pd_scene(file);
-  return s.config.loading == nosb_pd::Loading::tension ? "pd_tension" : "pd_penetration";
+  const auto load = Scene::load(file).root().optional_table("loading");
+  return load && load->choice("kind", {"none", "tension", "impact"}) == "tension" ? "pd_tension" : "pd_penetration";
 }
 
 }  // namespace

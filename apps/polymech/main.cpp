@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
   }
   std::string app;
   const int rc = pm::apps::guarded("polymech", [&] {
-    pm::apps::KokkosSession kokkos(1);  // the loaders check stability limits with the models' kernels
-    const pm::io::SceneKind& kind = pm::io::scene_kind_of(scene);
+    const pm::io::SceneKind& kind = pm::io::scene_kind_of(scene);  // the scene's text only: no Kokkos, no kernels
     app = kind.app_for(scene);
     return 0;
   });
