@@ -37,6 +37,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "solid/hyperelastic.hpp"
@@ -128,6 +129,16 @@ class HyperelasticExplicit {
   double tie_mass(std::size_t k) const { return body_[k].mass; }
   double tie_inertia(std::size_t k) const { return body_[k].inertia; }
   double strain_energy() const { return solid_.strain_energy(); }
+  // External nodal forces that depend on the state (contact: models/solid/tyre.hpp's plate): called after each
+  // residual with (t, u, v, r); it subtracts its forces from r (r = f_int - f_ext), so they reach the free nodes'
+  // accelerations and, on tied nodes, the bodies. Not part of the critical-step estimate.
+  using ExternalForce = std::function<void(double, const View1<T>&, const View1<T>&, const View1<T>&)>;
+  void set_external_force(ExternalForce f) { external_ = std::move(f); }
+  // The mass-proportional damping from now on (the tyre: settle the inflation, then press on a plate).
+  void set_damping(double alpha) {
+    if (!(alpha >= 0.0)) throw std::invalid_argument("solid::HyperelasticExplicit: damping must be >= 0");
+    o_.damping = alpha;
+  }
 
   // The critical step at the current state (power iteration; also re-estimates omega_max).
   double estimate_critical_step() {
@@ -339,6 +350,7 @@ class HyperelasticExplicit {
                                " does not evaluate (an element inverted or a non-finite stress): the step " +
                                models::format_g(dt_) + " is unstable here (critical step at the start " +
                                models::format_g(dt_crit_) + ") or the load is too large");
+    if (external_) external_(t, u_, v_, r_);
     const auto a = a_, r = r_, v = v_, m = mass_;
     const auto kind = kind_;
     const T alpha = static_cast<T>(o_.damping);
@@ -520,6 +532,7 @@ class HyperelasticExplicit {
   std::vector<RigidTie<D>> ties_;
   std::vector<Body> body_;
   std::vector<TieState<D>> state_;
+  ExternalForce external_;
   View1<T> u_, v_, a_, r_, work_, mass_, g_scaled_;
   View1<char> kind_;                // per DoF: 0 free, 1 Dirichlet, 2 tied
   std::vector<char> kind_host_;

@@ -1,0 +1,302 @@
+// The deformable tyre 37x12.5R16.5 of seed 002 paper 2 (§4: "the rubber parts ... Mooney-Rivlin, the carcass and
+// belt reinforcements ... orthotropic elastic, the rim rigid"; issue 37) as one mapped 3D lattice of the solid
+// layer (models/solid/mesh.hpp), and a rigid plate pressed against it (node-to-plane penalty contact).
+//
+// Lattice: direction 0 round the wheel (theta, periodic), direction 1 along the cross-section contour from bead to
+// bead (s in [0, 1]: ymin = the bead at y < 0, ymax = the bead at y > 0; sidewall - shoulder - tread - shoulder -
+// sidewall), direction 2 through the wall (t in [0, 1]: zmin = the inner surface, where the inflation pressure
+// acts; zmax = the outer surface, the contact surface). The wheel axis is y, the vertical z: a point of the section
+// at radius r and axial position a is (r cos theta, a, -r sin theta), so the tyre's lowest point (theta = pi/2) is
+// at z = -R and the lattice's Jacobian is positive.
+//
+// The section (TyreSpec): the inner contour is three tangent-continuous circular arcs per half (the tread crown
+// arc of radius R_t from the centre line to the tread edge, the shoulder arc of radius R_s down to the widest
+// point, where the contour is radial, and the sidewall arc of radius R_w turning in to the bead), parametrised by
+// arc length so the cells along it are of equal length; R_s and (R_w, its angle) follow from the widest point and
+// the bead position (bead_section). The wall is h_t thick over the tread and h_w on the sidewall (a cosine
+// blend over the shoulder arc), offset along the contour's normal. Dimensions: outer radius 0.445 m and width
+// 0.310 m (paper 2 §4); rim 16.5 in (radius 0.2096 m) and 8.25 in wide (the 16.5x8.25 rim of this size, so the
+// beads at y = +-0.105 m); wall gauges, crown and tread width assumed (TyreSpec comments; docs/VALIDATION.md).
+//
+// One law for every element (the Config has one): a Mooney-Rivlin solid whose initial shear modulus is the
+// rubber's plus the reinforcement smeared over the sidewall gauge (tyre_equivalent_law): each carcass ply is
+// a unidirectional cord-rubber layer (rule of mixtures E_1 = V_f E_cord + (1 - V_f) E_rubber along the cords,
+// E_2 = E_rubber / (1 - V_f) across), the plies' in-plane stiffness replaced by the quasi-isotropic laminate's
+// E_qi = 3/8 E_1 + 5/8 E_2 (the classical quasi-isotropic estimate for E_1 >> E_2), and its membrane stiffness
+// E_qi t_plies spread over the wall: E_eq = E_rubber + E_qi t_plies / h_w, mu_eq = E_eq / 3, split between C10
+// and C01 in the rubber's ratio; the bulk modulus kappa = kappa_ratio mu_eq (the homogenised cord-rubber
+// composite is compressible; a larger ratio shortens the explicit step as 1/sqrt(kappa)). Smearing over the
+// gauge matches the membrane stiffness that carries the inflation; it overestimates the wall's bending
+// stiffness (the cords sit at mid-surface) and underestimates the steel belt's circumferential stiffness.
+//
+// Plate (PlateContact): a rigid plane z = z_p(t) below the tyre, normal +z, frictionless; each outer-surface node
+// below it gets f_z = k_i g + c_i (v_p - v_z) >= 0 (g = z_p - z_i the penetration), k_i = beta m_i omega_max^2 (a
+// fraction beta of the stiffest element mode on the node's lumped mass, so the contact costs the explicit step at
+// most a factor 1/sqrt(1 + beta)), c_i = 2 zeta sqrt(k_i m_i). It is a Kokkos kernel on the residual
+// (HyperelasticExplicit::set_external_force), so the tyre's reaction reaches the rim's ties exactly.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "solid/finite_strain_explicit.hpp"
+
+namespace polymech::solid {
+
+struct TyreSpec {
+  double outer_radius = 0.445;   // paper 2 §4
+  double width = 0.310;          // paper 2 §4 (section width)
+  double rim_radius = 0.2096;    // 16.5 in / 2
+  double rim_width = 0.2096;     // 8.25 in: the 16.5x8.25 rim of this size (bead heels at +-rim_width / 2)
+  double tread_gauge = 0.020;    // h_t: carcass + belts + smooth tread over the crown (assumed, light-truck tyres)
+  double wall_gauge = 0.012;     // h_w: sidewall (assumed, light-truck tyres 10-15 mm)
+  double crown_radius = 0.35;    // R_t: the tread arc of the inner contour (assumed)
+  double tread_half_width = 0.100;  // inner tread arc's half width (assumed: ~ 2/3 of the section)
+  // Rubber (Mooney-Rivlin), the carcass plies, the composite's density and compressibility.
+  double C10 = 0.8e6, C01 = 0.2e6;     // Pa: tyre rubber (Pa); E_rubber = 6 (C10 + C01)
+  double cord_modulus = 4.0e9;          // Pa: polyester cord (carcass)
+  double cord_fraction = 0.3;           // V_f in a ply
+  double ply_thickness = 1.0e-3;        // m
+  int plies = 2;                        // radial carcass plies
+  double kappa_ratio = 10.0;            // kappa / mu_eq (nu = 0.45)
+  double mass = 37.6;                   // kg: the tyre's mass; the density follows from the volume
+};
+
+// The inner contour's half (the y > 0 side) from the centre line: three arcs (radius, turning angle).
+struct TyreSection {
+  double r_top = 0.0;                       // inner crown radius
+  std::array<double, 3> radius{}, angle{};  // tread, shoulder, sidewall arcs
+  double half_length = 0.0;
+  double widest_r = 0.0, widest_a = 0.0;    // the inner contour's widest point
+  double tread_gauge = 0.0, wall_gauge = 0.0;
+
+  // Inner point (a, r), the unit outward normal (n_a, n_r) and the gauge at arc length sigma >= 0 from the crown.
+  void at(double sigma, double* p, double* n, double& h) const {
+    double a = 0.0, r = r_top, phi = 0.0, left = sigma;
+    for (int k = 0; k < 3; ++k) {
+      const double len = radius[k] * angle[k];
+      const double d = k == 2 ? left : std::fmin(left, len);
+      const double dphi = d / radius[k];
+      a += radius[k] * (std::sin(phi + dphi) - std::sin(phi));
+      r += radius[k] * (std::cos(phi + dphi) - std::cos(phi));
+      if (k == 1) {  // the gauge blends over the shoulder arc
+        const double f = 0.5 * (1.0 - std::cos(3.14159265358979323846 * std::fmin(1.0, d / len)));
+        h = tread_gauge + (wall_gauge - tread_gauge) * f;
+      } else if (k == 0) {
+        h = tread_gauge;
+      }
+      phi += dphi;
+      left -= d;
+      if (left <= 0.0) break;
+    }
+    if (sigma > radius[0] * angle[0] + radius[1] * angle[1]) h = wall_gauge;
+    p[0] = a;
+    p[1] = r;
+    n[0] = std::sin(phi);  // heading (cos phi, -sin phi) in (a, r), turned outward
+    n[1] = std::cos(phi);
+  }
+};
+
+inline TyreSection tyre_section(const TyreSpec& s) {
+  TyreSection c;
+  c.tread_gauge = s.tread_gauge;
+  c.wall_gauge = s.wall_gauge;
+  c.r_top = s.outer_radius - s.tread_gauge;
+  const double Wi = 0.5 * s.width - s.wall_gauge;  // inner half width at the widest point
+  const double Rt = s.crown_radius, at = std::asin(s.tread_half_width / Rt);
+  const double Rs = (Wi - Rt * std::sin(at)) / (1.0 - std::sin(at));
+  if (!(Rs > s.tread_gauge) || !(Wi > 0.5 * s.rim_width))
+    throw std::invalid_argument("solid::tyre_section: the tread, the width and the gauges leave no shoulder arc (R_s = " +
+                                std::to_string(Rs) + " m)");
+  const double r2 = c.r_top - Rt * (1.0 - std::cos(at)) - Rs * std::cos(at);
+  const double da = Wi - 0.5 * s.rim_width, dr = r2 - s.rim_radius;
+  if (!(dr > 0.0)) throw std::invalid_argument("solid::tyre_section: the widest point lies below the rim");
+  const double aw = 2.0 * std::atan(da / dr), Rw = dr / std::sin(aw);
+  c.radius = {Rt, Rs, Rw};
+  c.angle = {at, 0.5 * 3.14159265358979323846 - at, aw};
+  c.half_length = Rt * at + Rs * c.angle[1] + Rw * aw;
+  c.widest_r = r2;
+  c.widest_a = Wi;
+  return c;
+}
+
+// The tyre's mapped lattice: n_theta x n_section x n_wall cells (see the header).
+inline StructuredMesh<3> make_tyre(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
+  if (n_theta < 3 || n_section < 2 || n_wall < 1) throw std::invalid_argument("solid::make_tyre: need n_theta >= 3, n_section >= 2, n_wall >= 1");
+  const double two_pi = 6.28318530717958647692;
+  std::vector<double> th(static_cast<std::size_t>(n_theta) + 1), sv(static_cast<std::size_t>(n_section) + 1),
+      tv(static_cast<std::size_t>(n_wall) + 1);
+  for (int i = 0; i <= n_theta; ++i) th[static_cast<std::size_t>(i)] = two_pi * i / n_theta;
+  for (int i = 0; i <= n_section; ++i) sv[static_cast<std::size_t>(i)] = static_cast<double>(i) / n_section;
+  for (int i = 0; i <= n_wall; ++i) tv[static_cast<std::size_t>(i)] = static_cast<double>(i) / n_wall;
+  StructuredMesh<3> m = make_tensor_box<3>({th, sv, tv});
+  m.periodic = {true, false, false};
+  const TyreSection c = tyre_section(s);
+  m.map = [c](const double* xi, double* x) {
+    const double sigma = (2.0 * xi[1] - 1.0) * c.half_length;
+    double p[2], n[2], h = 0.0;
+    c.at(std::fabs(sigma), p, n, h);
+    const double sg = sigma < 0.0 ? -1.0 : 1.0;
+    const double a = sg * (p[0] + xi[2] * h * n[0]), r = p[1] + xi[2] * h * n[1];
+    x[0] = r * std::cos(xi[0]);
+    x[1] = a;
+    x[2] = -r * std::sin(xi[0]);
+  };
+  return m;
+}
+
+// Volume of the tyre (revolved section, midpoint rule on a fine (sigma, t) grid).
+inline double tyre_volume(const TyreSpec& s) {
+  const TyreSection c = tyre_section(s);
+  const int ns = 4000, nt = 8;
+  double v = 0.0;
+  const double ds = c.half_length / ns;
+  for (int i = 0; i < ns; ++i) {
+    double p[2], n[2], h = 0.0, p2[2], n2[2], h2 = 0.0;
+    const double sg = (i + 0.5) * ds;
+    c.at(sg - 0.5 * ds, p, n, h);
+    c.at(sg + 0.5 * ds, p2, n2, h2);
+    for (int j = 0; j < nt; ++j) {
+      const double t = (j + 0.5) / nt;
+      // the cell's corners in (a, r): a thin quadrilateral; its area by the cross product of its diagonals
+      const double A0[2] = {p[0] + t * h * n[0], p[1] + t * h * n[1]}, A1[2] = {p2[0] + t * h2 * n2[0], p2[1] + t * h2 * n2[1]};
+      const double ta[2] = {A1[0] - A0[0], A1[1] - A0[1]};
+      const double nm[2] = {0.5 * (n[0] + n2[0]), 0.5 * (n[1] + n2[1])};
+      const double hm = 0.5 * (h + h2) / nt;
+      const double area = std::fabs(ta[0] * nm[1] - ta[1] * nm[0]) * hm;
+      v += 2.0 * 6.28318530717958647692 * (0.5 * (A0[1] + A1[1])) * area;  // both halves: 2 x 2 pi r dA
+    }
+  }
+  return v;
+}
+
+// The one law of every element: Mooney-Rivlin with the rubber plus the smeared carcass plies (see the header).
+struct TyreLaw {
+  materials::MooneyRivlin<double> law;
+  double E_ply_along = 0.0, E_ply_across = 0.0, E_quasi_isotropic = 0.0, E_equivalent = 0.0, mu = 0.0, density = 0.0;
+};
+
+inline TyreLaw tyre_equivalent_law(const TyreSpec& s) {
+  TyreLaw o;
+  const double Er = 6.0 * (s.C10 + s.C01);
+  o.E_ply_along = s.cord_fraction * s.cord_modulus + (1.0 - s.cord_fraction) * Er;
+  o.E_ply_across = Er / (1.0 - s.cord_fraction);
+  o.E_quasi_isotropic = 0.375 * o.E_ply_along + 0.625 * o.E_ply_across;
+  o.E_equivalent = Er + o.E_quasi_isotropic * s.plies * s.ply_thickness / s.wall_gauge;
+  o.mu = o.E_equivalent / 3.0;
+  const double share = s.C10 / (s.C10 + s.C01);
+  o.law.C10 = 0.5 * o.mu * share;
+  o.law.C01 = 0.5 * o.mu * (1.0 - share);
+  o.law.kappa = s.kappa_ratio * o.mu;
+  o.density = s.mass / tyre_volume(s);
+  return o;
+}
+
+// The widest point of the (deformed) inner surface on the y > 0 side, on the meridian theta = 0: (y, r) at the
+// vertex of the parabola through the node of largest y and its two neighbours along the contour (the membrane
+// closed form of the bead force needs the radius where the inner contour is axial-most, between nodes on a
+// coarse mesh).
+inline std::array<double, 2> widest_inner_point(const Discretization<3>& d, const std::vector<double>& u) {
+  const int n1 = d.lattice[1];
+  std::vector<double> y(static_cast<std::size_t>(n1)), r(static_cast<std::size_t>(n1));
+  for (int j = 0; j < n1; ++j) {
+    const std::size_t i = static_cast<std::size_t>(3 * d.node({0, j, 0}));
+    const double x = d.coordinates[i] + u[i], z = d.coordinates[i + 2] + u[i + 2];
+    y[static_cast<std::size_t>(j)] = d.coordinates[i + 1] + u[i + 1];
+    r[static_cast<std::size_t>(j)] = std::sqrt(x * x + z * z);
+  }
+  int k = 1;
+  for (int j = 1; j + 1 < n1; ++j)
+    if (y[static_cast<std::size_t>(j)] > y[static_cast<std::size_t>(k)]) k = j;
+  const double ym = y[static_cast<std::size_t>(k - 1)], y0 = y[static_cast<std::size_t>(k)], yp = y[static_cast<std::size_t>(k + 1)];
+  const double den = ym - 2.0 * y0 + yp;
+  const double q = den < 0.0 ? std::fmax(-1.0, std::fmin(1.0, 0.5 * (ym - yp) / den)) : 0.0;  // vertex offset in nodes
+  const double rm = r[static_cast<std::size_t>(k - 1)], r0 = r[static_cast<std::size_t>(k)], rp = r[static_cast<std::size_t>(k + 1)];
+  return {y0 - 0.25 * (ym - yp) * q, r0 + 0.5 * q * (rp - rm) + 0.5 * q * q * (rp - 2.0 * r0 + rm)};
+}
+
+// The rigid plate z = z_p(t) (normal +z, frictionless) against the outer-surface nodes (see the header).
+template <class T>
+class PlateContact {
+ public:
+  PlateContact(const Discretization<3>& d, const View1<T>& lumped_mass, double omega_max, double beta, double zeta,
+               std::function<double(double)> height, std::function<double(double)> speed)
+      : height_(std::move(height)), speed_(std::move(speed)) {
+    if (!(beta > 0.0) || !(zeta >= 0.0)) throw std::invalid_argument("solid::PlateContact: need beta > 0, zeta >= 0");
+    const std::vector<std::int64_t> nodes = side_nodes(d, "zmax");
+    const std::vector<double> m = models::to_host(lumped_mass);
+    std::vector<Index> id(nodes.size());
+    std::vector<double> z0(nodes.size()), k(nodes.size()), c(nodes.size());
+    for (std::size_t j = 0; j < nodes.size(); ++j) {
+      id[j] = static_cast<Index>(nodes[j]);
+      z0[j] = d.coordinates[static_cast<std::size_t>(3 * nodes[j] + 2)];
+      const double mi = m[static_cast<std::size_t>(3 * nodes[j] + 2)];
+      k[j] = beta * mi * omega_max * omega_max;
+      c[j] = 2.0 * zeta * std::sqrt(k[j] * mi);
+    }
+    nodes_ = models::to_device<Index>("polymech::solid::plate_nodes", id);
+    z0_ = models::to_device<double>("polymech::solid::plate_z0", z0);
+    k_ = models::to_device<double>("polymech::solid::plate_k", k);
+    c_ = models::to_device<double>("polymech::solid::plate_c", c);
+    host_nodes_ = nodes;
+  }
+
+  // r -= f on the contact nodes' z rows; records the total force and the number of nodes in contact.
+  void apply(double t, const View1<T>& u, const View1<T>& v, const View1<T>& r) {
+    const double zp = height_(t), vp = speed_ ? speed_(t) : 0.0;
+    const auto nodes = nodes_;
+    const auto z0 = z0_, k = k_, c = c_;
+    double F = 0.0, count = 0.0;
+    Kokkos::parallel_reduce(
+        "polymech::solid::plate_contact", Kokkos::RangePolicy<ExecSpace>(0, static_cast<Index>(host_nodes_.size())),
+        KOKKOS_LAMBDA(const Index j, double& f_sum, double& n_sum) {
+          const Index i = nodes(j);
+          const double g = zp - (z0(j) + double(u(3 * i + 2)));
+          if (g <= 0.0) return;
+          double f = k(j) * g + c(j) * (vp - double(v(3 * i + 2)));
+          f = f > 0.0 ? f : 0.0;
+          r(3 * i + 2) -= static_cast<T>(f);
+          f_sum += f;
+          n_sum += 1.0;
+        },
+        F, count);
+    force_ = F;
+    in_contact_ = static_cast<int>(count);
+  }
+
+  double force() const { return force_; }
+  int nodes_in_contact() const { return in_contact_; }
+  const std::vector<std::int64_t>& nodes() const { return host_nodes_; }
+  double height(double t) const { return height_(t); }
+
+  // The contact patch: the x and y extents of the nodes at or below the plate (host; at output times).
+  std::array<double, 2> patch(const Discretization<3>& d, const View1<T>& u, double t) const {
+    const std::vector<double> uh = models::to_host(u);
+    const double zp = height_(t);
+    double xl = 1e300, xh = -1e300, yl = 1e300, yh = -1e300;
+    for (const std::int64_t n : host_nodes_) {
+      const std::size_t i = static_cast<std::size_t>(3 * n);
+      if (d.coordinates[i + 2] + uh[i + 2] > zp) continue;
+      const double x = d.coordinates[i] + uh[i], y = d.coordinates[i + 1] + uh[i + 1];
+      xl = std::fmin(xl, x);
+      xh = std::fmax(xh, x);
+      yl = std::fmin(yl, y);
+      yh = std::fmax(yh, y);
+    }
+    if (xh < xl) return {0.0, 0.0};
+    return {xh - xl, yh - yl};
+  }
+
+ private:
+  std::function<double(double)> height_, speed_;
+  Kokkos::View<Index*, MemSpace> nodes_;
+  View1<double> z0_, k_, c_;
+  std::vector<std::int64_t> host_nodes_;
+  double force_ = 0.0;
+  int in_contact_ = 0;
+};
+
+}  // namespace polymech::solid
