@@ -254,6 +254,31 @@ class NavierStokes2D {
     return flux;
   }
 
+  // A moving mesh (ALE; models/fsi/mesh_motion.hpp): new node coordinates (node_count x 2, the same topology),
+  // then the geometry is recomputed (throws for an inverted element). The state is kept as the next start.
+  void set_coordinates(const std::vector<double>& x) {
+    if (x.size() != mesh_.x.size())
+      throw std::invalid_argument("flow: set_coordinates got " + std::to_string(x.size()) + " values for " +
+                                  std::to_string(mesh_.x.size()));
+    mesh_.x = x;
+    update_geometry();
+  }
+  // The mesh velocity w per node (node_count x 2, indexed like the state's velocity part) for the ALE convective
+  // velocity u - w; an empty vector: a mesh at rest.
+  void set_mesh_velocity(const std::vector<double>& w) {
+    if (w.empty()) {
+      W_ = View1<double>();
+      return;
+    }
+    if (w.size() != static_cast<std::size_t>(2 * nn_))
+      throw std::invalid_argument("flow: set_mesh_velocity got " + std::to_string(w.size()) + " values for " +
+                                  std::to_string(2 * nn_));
+    if (W_.extent(0) != w.size()) W_ = View1<double>("polymech::flow::W", w.size());
+    copy_to(W_, w);
+  }
+  // Oseen steps at the start of later solves (0 once a good initial state exists, e.g. in a coupling loop).
+  void set_picard_steps(int n) { cfg_.picard_steps = std::max(0, n); }
+
   // Assembles the residual only (no Jacobian) at the current state and returns the forces on kObstacle.
   Forces evaluate_forces(double ct = 0.0) {
     assemble(ct, false, false);

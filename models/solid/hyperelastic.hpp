@@ -121,6 +121,12 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
     energy_ = ev.energy;
     if (c0_ > 0.0) add_inertia(u, this->f_int_);
     Kokkos::deep_copy(f_load_, this->f_ext_);
+    if (nodal_load_.extent(0) > 0) {  // a consistent nodal force vector (set_nodal_load), a dead load like f_ext
+      const auto fl = f_load_, fn = nodal_load_;
+      Kokkos::parallel_for(
+          "polymech::solid::fs_nodal_load", Kokkos::RangePolicy<ExecSpace>(0, this->dof_count()),
+          KOKKOS_LAMBDA(const Index i) { fl(i) += fn(i); });
+    }
     solvers::scale(this->dof_count(), static_cast<T>(lambda), f_load_, f_load_);
     if (pressure_.faces() > 0) {
       if (tangent)
@@ -136,6 +142,22 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
     fem::fill_constrained(this->op_.constrained, T(0), r);
     if (ev.failed_elements > 0) return std::numeric_limits<double>::quiet_NaN();
     return std::sqrt(solvers::norm2("polymech::solid::fs_residual_norm", this->dof_count(), r));
+  }
+
+  // Nodal forces added to the dead loads f_ext (scaled by the load factor like them): D values per node, every
+  // DoF (those on constrained rows go to the reactions). For loads that arrive as consistent nodal forces, such
+  // as a fluid's reaction forces at the wet nodes of a partitioned coupling (models/fsi/turek_hron_fsi.hpp): the
+  // force is passed as it is, so the momentum it carries is transferred exactly. An empty vector removes it.
+  void set_nodal_load(const std::vector<double>& f) {
+    if (f.empty()) {
+      nodal_load_ = View1<T>();
+      return;
+    }
+    if (f.size() != static_cast<std::size_t>(this->dof_count()))
+      throw std::invalid_argument("solid::Hyperelastic: a nodal load needs " + std::to_string(this->dof_count()) +
+                                  " values (D per node), got " + std::to_string(f.size()));
+    std::vector<T> ft(f.begin(), f.end());
+    nodal_load_ = models::to_device<T>("polymech::solid::nodal_load", ft);
   }
 
   // The tangent dr/du of the last residual(..., tangent = true) evaluation, assembled (identity on the
@@ -253,7 +275,7 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
   PressureFaces<D> pressure_;
   FiniteStrainElementData<T> elements_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> face_force_, face_stiffness_;
-  View1<T> f_load_;
+  View1<T> f_load_, nodal_load_;
   double energy_ = 0.0;
   solvers::HostSparseLU lu_;
 };
