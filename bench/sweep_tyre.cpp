@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
   const double p = 0.35e6, t_inflate = 0.010, t_hold = 0.010;
   polymech::kx::initialize();
   {
-    const so::TyreSpec spec;
+    const so::TyreSpec spec{};
     const so::TyreSection sec = so::tyre_section(spec);
     const so::TyreLaw law = so::tyre_equivalent_law(spec);
     std::printf("section: inner crown r %.4f, arcs R = %.4f %.4f %.4f m, angles %.3f %.3f %.3f rad, half contour %.4f m, "

@@ -83,7 +83,7 @@ class TurekHronFsi {
   explicit TurekHronFsi(const TurekHronFsiCase& c) : case_(c) {
     const std::clock_t c0 = std::clock();
     if (c.level < 0 || c.level > 4) throw std::invalid_argument("turek-hron fsi: level " + std::to_string(c.level) + " outside 0..4");
-    const flow::TurekHronGeometry g;
+    const flow::TurekHronGeometry g{};
     flow::QuadMesh mesh = flow::make_turek_hron_channel(c.level, g);
     X_ = mesh.x;
     // the solid lattice on the flag block's cells

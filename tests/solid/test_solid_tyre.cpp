@@ -41,7 +41,7 @@ std::vector<so::RigidTie<3>> rim() {
 }  // namespace
 
 TEST(Tyre, SectionMeetsTheBeadAndTheWidestPoint) {
-  const so::TyreSpec spec;
+  const so::TyreSpec spec{};
   const so::TyreSection c = so::tyre_section(spec);
   double p[2], n[2], h = 0.0;
   c.at(c.half_length, p, n, h);
@@ -60,7 +60,7 @@ TEST(Tyre, SectionMeetsTheBeadAndTheWidestPoint) {
 }
 
 TEST(Tyre, InflationReactionsShapeAndPlate) {
-  const so::TyreSpec spec;
+  const so::TyreSpec spec{};
   const so::TyreLaw law = so::tyre_equivalent_law(spec);
   so::ExplicitFiniteStrainOptions eo;
   eo.density = law.density;
@@ -123,7 +123,7 @@ TEST(Tyre, InflationReactionsShapeAndPlate) {
 }
 
 TEST(Tyre, AStepAboveTheCriticalOneIsRefused) {
-  const so::TyreSpec spec;
+  const so::TyreSpec spec{};
   const so::TyreLaw law = so::tyre_equivalent_law(spec);
   so::ExplicitFiniteStrainOptions eo;
   eo.density = law.density;
