@@ -33,6 +33,7 @@ CASE_TOOLS = {
     "hydrostatic": "plot_isph.py",
     "dam_break": "plot_isph.py",
     "micro_cantilever": "plot_micro_cantilever_run.py",
+    "turek_hron": "plot_turek_hron.py",
 }
 
 

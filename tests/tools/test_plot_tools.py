@@ -146,6 +146,8 @@ def main():
     if app("helmholtz", "helmholtz", "--scene", os.path.join(scenes, "helmholtz", "duct.toml")):
         tool("plot_helmholtz_run.py", ["helmholtz"], ["convergence.png", "profile.png"], "helmholtz")
     # the hydrostatic tank at standard accuracy (400 particles): its draft (100 particles, dt x 4) blows up
+    if app("turek_hron", "cfd3", "--scene", os.path.join(scenes, "flow", "cfd3.toml"), "--accuracy", "draft", "--steps", "5"):
+        tool("plot_turek_hron.py", ["cfd3"], ["forces.png"], "cfd3")
     if app("isph", "hydrostatic", "--scene", os.path.join(scenes, "isph", "hydrostatic.toml"), "--accuracy", "standard",
            "--steps", "260"):
         tool("plot_isph.py", ["hydrostatic"], ["series.png", "particles.png", "pressure_profile.png"], "hydrostatic")
@@ -202,7 +204,7 @@ def main():
         "plot_mps_point_source.py": "harmonics", "plot_mps_harmonics.py": "mps", "plot_pd_penetration.py": "tension",
         "plot_pd_tension.py": "penetration", "plot_dem_benchmark.py": "mps", "plot_dem_pour.py": "dem_test1",
         "plot_efg.py": "helmholtz", "plot_helmholtz_run.py": "efg_static", "plot_isph.py": "wheel",
-        "isph_dam_break.py": "hydrostatic", "plot_isph_body.py": "dam_break",
+        "isph_dam_break.py": "hydrostatic", "plot_isph_body.py": "dam_break", "plot_turek_hron.py": "mps",
     }
     for script in scripts:
         if script in not_tools:

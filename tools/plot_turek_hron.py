@@ -1,0 +1,53 @@
+#!/usr/bin/python3
+"""Plot of one turek_hron run (issue 36: the Turek-Hron CFD tests, seed 002 paper 1).
+
+  /usr/bin/python3 tools/plot_turek_hron.py out/turek_hron [--forces FILE]
+
+Writes forces.png into the run folder from summary.json and forces.csv (a transient run, CFD3): drag and
+lift on the cylinder and flag against time, the window of the last period the summary's mean and amplitude
+come from shaded, and the published reference (Turek & Hron 2006: drag 439.45 +- 5.6183, lift -11.893 +-
+437.81, 4.3956 Hz) as lines. A steady run (CFD1, CFD2) has no time series: it is refused with the reason.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plotting import InputError, guarded, load_csv, pyplot, read_summary, run_folder, run_parser  # noqa: E402
+
+REFERENCE = {"drag": (439.45, 5.6183), "lift": (-11.893, 437.81), "frequency": 4.3956}
+
+
+def main():
+    p = run_parser(__doc__, "out/turek_hron")
+    p.add_argument("--forces", help="the time series (default: forces.csv in the run folder)")
+    args = p.parse_args()
+    run = run_folder(args.run)
+    s = read_summary(run, cases=("turek_hron",))
+    if s.get("analysis") != "transient":
+        raise InputError(f"{os.path.join(run, 'summary.json')}: a steady run (no forces.csv to plot); its drag and lift are in the summary")
+    f = load_csv(args.forces or os.path.join(run, "forces.csv"), required=("t", "drag", "lift"))
+    plt = pyplot()
+    fig, axes = plt.subplots(2, 1, figsize=(10, 6.5), sharex=True)
+    window = s.get("period_window")
+    for ax, key in zip(axes, ("drag", "lift")):
+        ax.plot(f["t"], f[key], lw=0.8, label=f"polymech, level {s.get('level')}, dt {s.get('dt')}")
+        mean, amp = REFERENCE[key]
+        ax.axhline(mean + amp, color="k", ls="--", lw=0.7, label="reference mean +- amplitude")
+        ax.axhline(mean - amp, color="k", ls="--", lw=0.7)
+        if window:
+            ax.axvspan(window[0], window[1], color="0.85", label="last period")
+        if f"{key}_mean" in s:
+            ax.set_title(f"{key}: {s[f'{key}_mean']:.3f} +- {s[f'{key}_amplitude']:.3f} (reference {mean} +- {amp})", fontsize=9)
+        ax.set_ylabel(f"{key} [N/m]")
+        ax.legend(fontsize=7, loc="lower left")
+    axes[1].set_xlabel("t [s]")
+    freq = s.get("frequency")
+    fig.suptitle(f"Turek-Hron CFD3: frequency {freq:.4f} Hz (reference {REFERENCE['frequency']})" if freq else "Turek-Hron CFD3")
+    fig.tight_layout()
+    out = os.path.join(run, "forces.png")
+    fig.savefig(out, dpi=110)
+    print(out)
+
+
+if __name__ == "__main__":
+    guarded(main)
