@@ -40,6 +40,17 @@ fl::TurekHronCase case_of(const pm::io::FlowSetup& s) {
   return c;
 }
 
+// The flow model's configuration from the scene (the solver's settings on the case's geometry and fluid; the
+// chord iteration for time steps only).
+fl::FlowConfig flow_config(const pm::io::FlowSetup& s) {
+  fl::FlowConfig cfg = fl::turek_hron_config(case_of(s));
+  cfg.picard_steps = s.picard_steps;
+  cfg.newton_max = s.max_iterations + s.picard_steps;
+  cfg.newton_tol = s.tolerance;
+  cfg.chord = s.transient && s.chord;
+  return cfg;
+}
+
 void put_timings(nlohmann::json& j, const fl::NavierStokes2D& ns) {
   const auto& t = ns.timings();
   j["cpu_split"] = {{"element_kernel", t.element_kernel}, {"scatter", t.scatter}, {"lu_factor", t.factor},
@@ -62,10 +73,7 @@ int run_steady(const pm::io::FlowScene& scene, const pm::apps::CommonOptions& op
   pm::apps::Case cs(spec, opt, {});
   const std::clock_t c0 = std::clock();
   const auto w0 = std::chrono::steady_clock::now();
-  fl::FlowConfig cfg = fl::turek_hron_config(case_of(s));
-  cfg.picard_steps = s.picard_steps;
-  cfg.newton_max = s.max_iterations + s.picard_steps;
-  cfg.newton_tol = s.tolerance;
+  const fl::FlowConfig cfg = flow_config(s);
   fl::NavierStokes2D ns(fl::make_turek_hron_channel(s.level), cfg);
   if (!opt.quiet)
     std::fprintf(stderr, "[turek_hron] %s\n  CFD%d, level %d: %lld cells, %lld unknowns, %s\n", scene.header.title.c_str(), s.test,
@@ -161,11 +169,7 @@ int run_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions&
   pm::apps::Case cs(spec, opt, {});
   const std::clock_t c0 = std::clock();
   const auto w0 = std::chrono::steady_clock::now();
-  fl::FlowConfig cfg = fl::turek_hron_config(case_of(s));
-  cfg.picard_steps = s.picard_steps;
-  cfg.newton_max = s.max_iterations + s.picard_steps;
-  cfg.newton_tol = s.tolerance;
-  cfg.chord = s.chord;
+  const fl::FlowConfig cfg = flow_config(s);
   fl::NavierStokes2D ns(fl::make_turek_hron_channel(s.level), cfg);
   // CFL of the inflow's peak speed 1.5 Ubar on the smallest node spacing (half the smallest cell edge of the Q2 mesh)
   double hmin = 1e300;
