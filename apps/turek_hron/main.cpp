@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "apps/common/case.hpp"
+#include "common/host_copy.hpp"
 #include "flow/turek_hron.hpp"
 #include "io/flow_scene.hpp"
 
@@ -102,6 +103,9 @@ int run_steady(const pm::io::FlowScene& scene, const pm::apps::CommonOptions& op
   j["drag_error"] = f.drag / ref.drag - 1.0;
   j["lift_error"] = f.lift / ref.lift - 1.0;
   j["divergence_l2"] = ns.divergence_l2();
+  if (!r.converged)
+    j["reason"] = "Newton did not converge in " + std::to_string(r.iterations) + " iterations (residual " +
+                  pm::models::format_g(r.residual) + ")";
   j["cpu_seconds"] = cpu;
   j["wall_seconds"] = wall;
   put_timings(j, ns);
@@ -201,6 +205,7 @@ int run_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions&
   pm::io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
   long newton = 0;
   bool failed = false;
+  std::string reason;
   std::int64_t done = 0;
   double next_report = 1.0;
   for (std::int64_t k = 1; k <= steps; ++k) {
@@ -210,6 +215,8 @@ int run_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions&
       std::fprintf(stderr, "turek_hron: step %lld (t = %g s): Newton did not converge in %d iterations (residual %.3e)\n",
                    static_cast<long long>(k), ns.time(), r.iterations, r.residual);
       failed = true;
+      reason = "step " + std::to_string(k) + " (t = " + pm::models::format_g(ns.time()) + " s): Newton did not converge in " +
+               std::to_string(r.iterations) + " iterations (residual " + pm::models::format_g(r.residual) + ")";
       break;
     }
     done = k;
@@ -239,6 +246,7 @@ int run_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions&
   j["cfl_inflow_smallest_cell"] = cfl;  // 1.5 Ubar on the smallest node spacing (an upper bound)
   j["cfl"] = flow_cfl(ns, s.dt);          // the flow's at the end: max |u| dt / node spacing over the cells
   j["steps"] = done;
+  if (failed) j["reason"] = reason;
   j["end_time"] = ns.time();
   j["newton_iterations"] = newton;
   j["kick"] = {{"omega", s.kick_omega}, {"start", s.kick_start}, {"duration", s.kick_duration}};
