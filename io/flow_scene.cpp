@@ -21,6 +21,19 @@ double flow_channel_unknowns(int level) {
 // docs/PERFORMANCE.md: a Newton iteration (the element kernel, the scatter, Eigen's SparseLU and its solves)
 // ~0.15 s at 9 106 unknowns, growing like N^1.6 (the factorisation: 91 %); a chord time step (one
 // factorisation, ~3 residual passes and solves) ~1.2 such iterations.
+// Coupling evaluations until |G(x) - x| <= tol |G(x)| on FSI1, from the measured histories (notes h-fsi1, the
+// same at every level): the first residual ~2 |G(x)| (the flag at rest), then IQN-ILS gains ~1.5 decades per
+// evaluation (superlinear: 6 at 1e-8), Aitken ~0.8 (11 at 1e-8), constant relaxation the decades of
+// max(|1 - omega|, 0.1) per evaluation (the contraction of G itself is far below 1: omega 0.5 halves |r|, 24
+// evaluations at 1e-8 measured, 28 predicted). At most max_iterations.
+double flow_fsi_evaluations(const FlowSetup& s) {
+  const double decades = std::log10(2.0 / s.coupling_tolerance);
+  double per = 1.5;
+  if (s.coupling_method == "aitken") per = 0.8;
+  if (s.coupling_method == "relaxation") per = -std::log10(std::max(std::fabs(1.0 - s.coupling_omega), 0.1));
+  return std::min(static_cast<double>(s.coupling_max_iterations), std::max(1.0, std::ceil(decades / per)));
+}
+
 CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
   CostEstimate c;
   c.method = "Taylor-Hood Q2/Q1 Navier-Stokes, Turek-Hron CFD" + std::to_string(s.test) + ", level " + std::to_string(s.level) +
@@ -47,6 +60,23 @@ CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
     c.size_keys.push_back("time.dt = " + format_number(s.dt));
     c.size_keys.push_back("time.end_time = " + format_number(s.end_time));
   }
+  if (s.fsi) {
+    // FSI1 (models/fsi/turek_hron_fsi.hpp): every coupling evaluation solves the fluid from the last state. Measured
+    // (notes h-fsi1, levels 0-3): the first solve 3 Oseen + ~5 Newton iterations, ~2 per later evaluation and ~2
+    // for the final solve on the converged mesh: 8 + 2 E iterations (IQN-ILS, E = 6: 20 vs 21 counted; Aitken,
+    // E = 11: 30 vs 29-30). The set-up adds the mesh motion's factorisation (~0.9 N unknowns): 0.08 s at 9 106
+    // unknowns, ~N^1.4 (0.57 s at level 2, 3.7 s at level 3); the solid (<= 4 352 DoFs) is ~0.1 %.
+    const double e = flow_fsi_evaluations(s);
+    c.method = "Taylor-Hood Q2/Q1 Navier-Stokes on a pseudo-elastically moved mesh + SVK flag, Turek-Hron FSI1, level " +
+               std::to_string(s.level) + ", " + s.coupling_method + " coupling";
+    c.steps = 8.0 + 2.0 * e;
+    c.step_name = "fluid Newton iterations over ~" + format_number(e) + " coupling evaluations (estimate)";
+    c.seconds = c.steps * iteration + 0.08 * std::pow(unknowns / 9106.0, 1.4);
+    // the fluid's LU (as above) and the mesh motion's (~0.9 N unknowns, two fields of Q2 nodes: sparser): resident
+    // 102 MB at level 1 and 539 MB at level 2 measured (apps/turek_hron, one thread) against 147 / 563 MB here
+    c.bytes = 30e6 + 1.3 * unknowns * (2e3 + 600.0 * std::log2(std::max(2.0, unknowns)));
+    c.rate = "a fluid Newton iteration ~ 0.15 s x (unknowns / 9106)^1.6, 8 + 2 per coupling evaluation (1 thread, notes h-fsi1)";
+  }
   return c;
 }
 
@@ -66,8 +96,9 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   {
     const SceneTable t = root.table("case");
     c.benchmark = t.choice("benchmark", {"turek_hron"});
-    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3"});
-    c.test = test[3] - '0';
+    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3", "fsi1"});
+    c.fsi = test == "fsi1";
+    c.test = test[3] - '0';  // fsi1: CFD1's inflow
     const double ubar[4] = {0.0, 0.2, 1.0, 2.0};
     c.mean_velocity = t.real("mean_velocity", ubar[c.test], Range{0.0, 100.0, true, false, "m/s (the inflow's mean velocity)"});
     c.density = t.real("density", 1000.0, Range{1e-3, 1e5, false, false, "kg/m^3"});
@@ -82,7 +113,25 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
     c.level = std::max(0, c.scene_level - coarser);
     t.finish();
   }
-  if (const auto t = root.optional_table("solver")) {
+  if (const auto t = root.optional_table("coupling")) {
+    if (!c.fsi) t->fail_table("applies to test = \"fsi1\" (the elastic flag); cfd1, cfd2 and cfd3 have a rigid flag: remove [coupling]");
+    c.coupling_method = t->choice("method", {"iqn-ils", "aitken", "relaxation"}, "iqn-ils");
+    c.coupling_tolerance = t->real("tolerance", 1e-8, Range{1e-14, 1e-2, false, false, "(|G(x) - x| relative to |G(x)|)"});
+    c.coupling_max_iterations = static_cast<int>(t->integer("max_iterations", 50, 1, 10000));
+    c.coupling_omega = t->real("omega", 0.5, Range{0.0, 2.0, true, true, "(the first step's relaxation factor)"});
+    if (c.coupling_method == "iqn-ils") {
+      c.coupling_reuse = static_cast<int>(t->integer("reuse", 8, 0, 1000));
+    } else if (t->has("reuse")) {
+      t->fail("reuse", "applies to method = \"iqn-ils\" (the time steps whose columns the quasi-Newton model keeps)");
+    }
+    t->finish();
+  }
+  if (c.fsi) {
+    if (const auto t = root.optional_table("solver"))
+      t->fail_table("applies to the cfd tests; fsi1's fluid solves use the coupled model's Newton settings (3 Oseen steps "
+                    "on the first solve, tolerance 1e-10): remove [solver], set [coupling]");
+    c.picard_steps = 3;
+  } else if (const auto t = root.optional_table("solver")) {
     c.picard_steps = static_cast<int>(t->integer("picard_steps", c.transient ? 0 : 3, 0, 100));
     c.max_iterations = static_cast<int>(t->integer("max_iterations", 25, 1, 1000));
     c.tolerance = t->real("tolerance", 1e-10, Range{1e-15, 1e-2, false, false, "(the Newton update relative to max |u|)"});
@@ -98,8 +147,8 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   const auto time = root.optional_table("time");
   const auto kick = root.optional_table("kick");
   if (!c.transient) {
-    if (time) time->fail_table("applies to test = \"cfd3\" (periodic); cfd1 and cfd2 are solved steady: remove [time]");
-    if (kick) kick->fail_table("applies to test = \"cfd3\" (periodic); cfd1 and cfd2 are solved steady: remove [kick]");
+    if (time) time->fail_table("applies to test = \"cfd3\" (periodic); cfd1, cfd2 and fsi1 are solved steady: remove [time]");
+    if (kick) kick->fail_table("applies to test = \"cfd3\" (periodic); cfd1, cfd2 and fsi1 are solved steady: remove [kick]");
   } else {
     if (!time) root.fail("time", "is missing: test = \"cfd3\" runs in time and needs [time] dt and end_time (s)");
     c.dt = time->real("dt", Range{1e-6, 1.0, false, false, "s"});

@@ -4,12 +4,18 @@
 //   [model]     kind = "flow", effects = [] (the model has none), precision = "double" (the sparse direct
 //               solves are double; "float" is refused)
 //   [case]      benchmark = "turek_hron" (the channel with the cylinder and the rigid flag, Turek & Hron 2006),
-//               test = "cfd1" | "cfd2" | "cfd3" (the inflow's mean velocity 0.2, 1, 2 m/s; cfd1 and cfd2 are
-//               solved steady, cfd3 in time), density (default 1000 kg/m^3), viscosity (kinematic, default
-//               1e-3 m^2/s): the benchmark's values unless changed
+//               test = "cfd1" | "cfd2" | "cfd3" | "fsi1" (the inflow's mean velocity 0.2, 1, 2, 0.2 m/s; cfd1,
+//               cfd2 and fsi1 are solved steady, cfd3 in time; fsi1 with the elastic SVK flag of
+//               models/fsi/turek_hron_fsi.hpp, its solid parameters the benchmark's), density (default
+//               1000 kg/m^3), viscosity (kinematic, default 1e-3 m^2/s): the benchmark's values unless changed
 //   [mesh]      level 0..6 at accuracy "paper" (260 x 4^level Q2/Q1 cells); the presets "standard" and "draft"
 //               take log2 of their factor (1 and 2 by default) levels off, down to level 0
-//   [solver]    picard_steps (Oseen steps from rest before Newton; default 3 for a steady test, 0 in time),
+//   [coupling]  fsi1 only, optional: method = "iqn-ils" (default) | "aitken" | "relaxation", tolerance (|G(x) - x|
+//               relative to |G(x)|, default 1e-8), max_iterations (evaluations of G, default 50), omega (the
+//               first step's relaxation factor, the constant one for "relaxation", default 0.5), reuse
+//               (iqn-ils only, default 8: time steps whose columns are kept; a steady solve has one)
+//   [solver]    cfd tests only (fsi1's fluid solves use the model's: 3 Oseen steps, then Newton to 1e-10):
+//               picard_steps (Oseen steps from rest before Newton; default 3 for a steady test, 0 in time),
 //               max_iterations (Newton, per solve or step, default 25), tolerance (on the update relative to
 //               max |u|, default 1e-10), chord (time steps: keep a step's first factorisation, default true)
 //   [time]      cfd3 only: dt (s), end_time (s), ramp_time (s, the inflow's cosine ramp, default 2),
@@ -43,6 +49,11 @@ struct FlowSetup {
   double dt = 0.0, end_time = 0.0, ramp_time = 0.0;
   int sample_every = 1;
   double kick_omega = 0.0, kick_start = 2.0, kick_duration = 0.25;
+  bool fsi = false;                   // fsi1 (test stays 1: CFD1's inflow)
+  std::string coupling_method = "iqn-ils";
+  double coupling_tolerance = 1e-8, coupling_omega = 0.5;
+  int coupling_max_iterations = 50, coupling_reuse = 8;
+  std::string name() const { return fsi ? "fsi1" : "cfd" + std::to_string(test); }
   std::int64_t steps() const { return transient ? static_cast<std::int64_t>(end_time / dt + 0.5) : 0; }
 };
 
@@ -59,7 +70,9 @@ double flow_channel_cells(int level);
 double flow_channel_unknowns(int level);
 
 // What a run costs: the Newton iterations (steady) or the time steps (one factorisation each with the chord
-// iteration), each dominated by the sparse LU (docs/PERFORMANCE.md, issue 36).
+// iteration), each dominated by the sparse LU (docs/PERFORMANCE.md, issue 36); for fsi1 the fluid's Newton
+// iterations over the expected coupling evaluations (flow_fsi_evaluations) and the mesh motion's factorisation.
+double flow_fsi_evaluations(const FlowSetup& s);
 CostEstimate flow_cost(const FlowSetup& s, double unknowns);
 
 FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions& options = {});

@@ -6,7 +6,9 @@
 //                 as the run goes), summary.json with drag_mean, drag_amplitude, lift_mean, lift_amplitude
 //                 and frequency over the last lift period as the benchmark defines them (periodic: false and
 //                 the last values when no shedding was found), the previous period's values (how settled the
-//                 oscillation is), CPU seconds and the cost split.
+//                 oscillation is), CPU seconds and the cost split;
+//   fsi1       -> the elastic flag, partitioned steady coupling (apps/turek_hron/fsi1.cpp): summary.json with
+//                 ux_A, uy_A, drag, lift against Table 12, the coupling's evaluations, CPU split.
 //   turek_hron [--scene scenes/flow/cfd1.toml] [--out out/turek_hron] [--accuracy draft|standard|paper]
 //              [--steps N] [--dry-run] [--threads 1]
 #include <chrono>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "apps/common/case.hpp"
+#include "apps/turek_hron/fsi1.hpp"
 #include "common/host_copy.hpp"
 #include "flow/turek_hron.hpp"
 #include "io/flow_scene.hpp"
@@ -289,8 +292,8 @@ int run_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions&
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The Turek-Hron CFD tests: steady CFD1, CFD2 and periodic CFD3 past the cylinder and rigid flag "
-               "(Taylor-Hood Navier-Stokes, issue 36)"};
+  CLI::App app{"The Turek-Hron CFD and FSI tests: steady CFD1, CFD2 and periodic CFD3 past the cylinder and rigid flag, "
+               "steady FSI1 with the elastic flag (Taylor-Hood Navier-Stokes, partitioned coupling, issue 36)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/flow/cfd1.toml", "out/turek_hron");
   if (const auto rc = pm::apps::parse_command_line(app, "turek_hron", argc, argv)) return *rc;
@@ -298,10 +301,11 @@ int main(int argc, char** argv) {
     const auto scene = pm::io::load_flow_scene(opt.scene, {opt.accuracy, opt.precision});
     const bool transient = scene.config.transient;
     if (!transient && opt.steps > 0)
-      throw std::invalid_argument("--steps " + std::to_string(opt.steps) + ": does not apply: a steady test (cfd1, cfd2) has no time steps");
+      throw std::invalid_argument("--steps " + std::to_string(opt.steps) + ": does not apply: a steady test (cfd1, cfd2, fsi1) has no time steps");
     const auto cost = transient ? pm::apps::with_steps(scene.cost, scene.config.steps(), opt.steps) : scene.cost;
     if (pm::apps::announce_cost("turek_hron", scene.header, cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
+    if (scene.config.fsi) return pm::apps::run_turek_hron_fsi1(scene, opt);
     return transient ? run_transient(scene, opt) : run_steady(scene, opt);
   });
 }

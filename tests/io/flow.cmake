@@ -1,7 +1,11 @@
 # The Turek-Hron app (issue 36; included by tests/io/CMakeLists.txt): a misspelt key stops it with exit code 2
 # naming the file, line and key; CFD1 at accuracy draft (level 1, ~1 s) writes summary.json with drag and lift
 # within 0.3 % / 0.5 % of the reference (the digits below); CFD3 at draft for 5 steps writes forces.csv and a
-# summary that says it is not periodic yet. Label cli, like the other app runs.
+# summary that says it is not periodic yet. FSI1 (the elastic flag): a misspelt [coupling] key exits 2 with file:line:key;
+# at accuracy draft (level 1, ~3 s) converged with ux(A), uy(A), drag, lift near Table 12 (the patterns below:
+# measured -1.04, -0.39, -0.28, +0.31 %; the digits allow ux 2.2-2.3e-5 (-3..+1 %), uy 7.9-8.4e-4 (-3.8..+2.3 %),
+# drag 14.22-14.30, lift 0.75-0.77); a coupling cut short (2 evaluations) writes the reason and exits 1.
+# Label cli, like the other app runs.
 set(flow_env "OMP_NUM_THREADS=1;OMP_PROC_BIND=false;OMP_WAIT_POLICY=passive")
 function(flow_app_test name scene pattern)
   add_test(NAME ${name}
@@ -17,3 +21,10 @@ flow_app_test(turek_hron_cfd1_draft ${PROJECT_SOURCE_DIR}/scenes/flow/cfd1.toml
 flow_app_test(turek_hron_cfd3_steps ${PROJECT_SOURCE_DIR}/scenes/flow/cfd3.toml
   "exit code 0: .*summary.json: .*\"files\": \\[[^]]*\"forces.csv\".*\"periodic\": false,.*\"steps\": 5,"
   --accuracy draft --steps 5)
+flow_app_test(turek_hron_fsi1_names_a_bad_coupling_key ${CMAKE_CURRENT_SOURCE_DIR}/data/fsi1_bad_coupling_key.toml
+  "exit code 2: turek_hron: error: .*fsi1_bad_coupling_key.toml:[0-9]+:1: unknown key 'coupling.max_iteration'; allowed in \\[coupling\\]: .*max_iterations.*summary.json: missing")
+flow_app_test(turek_hron_fsi1_draft ${PROJECT_SOURCE_DIR}/scenes/flow/fsi1.toml
+  "exit code 0: .*summary.json: .*\"converged\": true,.*\"coupling_evaluations\": [4-8],.*\"drag\": 14\\.(2[2-9]|30)[0-9]*,.*\"level\": 1,.*\"lift\": 0\\.7[5-6][0-9]*,.*\"test\": \"fsi1\",.*\"ux_A\": 2\\.2[0-9]*e-05,.*\"uy_A\": 0\\.000(79|8[0-3])[0-9]*,"
+  --accuracy draft)
+flow_app_test(turek_hron_fsi1_coupling_stops ${CMAKE_CURRENT_SOURCE_DIR}/data/fsi1_coupling_stops.toml
+  "exit code 1: .*the aitken coupling stopped: no convergence in 2 evaluations.*summary.json: .*\"converged\": false,.*\"reason\": \"the aitken coupling stopped: no convergence in 2 evaluations")
