@@ -15,6 +15,7 @@
 #include "io/dem_scene.hpp"
 #include "io/efg_scene.hpp"
 #include "io/helmholtz_scene.hpp"
+#include "io/isph_scene.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/nosb_pd_scene.hpp"
 #include "io/scene.hpp"
@@ -100,6 +101,36 @@ PowerLaw fit_power_law(const std::vector<double>& h, const std::vector<double>& 
 
 namespace {
 
+// (h1^p - h2^p) / (h2^p - h3^p), increasing in p from log(h1/h2) / log(h2/h3) at p -> 0
+double richardson_ratio(double h1, double h2, double h3, double p) {
+  return (std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p));
+}
+
+// The observed order of three runs h1 > h2 > h3 (0: none, with the reason).
+double observed_order(double h1, double h2, double h3, double q1, double q2, double q3, std::string& why) {
+  const double d1 = q1 - q2, d2 = q2 - q3;
+  if (d2 == 0.0 || d1 == 0.0 || (d1 > 0) != (d2 > 0)) {
+    why = "the changes between successive runs alternate in sign or vanish (no monotone convergence)";
+    return 0.0;
+  }
+  const double r = d1 / d2;
+  if (r <= std::log(h1 / h2) / std::log(h2 / h3)) {
+    why = "the changes between successive runs do not shrink with h (no convergence at any order p > 0)";
+    return 0.0;
+  }
+  double lo = 1e-6, hi = 1.0;
+  while (richardson_ratio(h1, h2, h3, hi) < r && hi < 64) hi *= 2;
+  if (richardson_ratio(h1, h2, h3, hi) < r) {
+    why = "the observed order is above 64 (the changes collapse: round-off or a floor, not convergence)";
+    return 0.0;
+  }
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (richardson_ratio(h1, h2, h3, mid) < r ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 bool same_group(const SweepPoint& p, const GroupModel& g) { return p.order == g.order && p.single == g.single; }
 
 // The points of one group, coarsest first.
@@ -123,7 +154,66 @@ std::size_t best_index(const std::vector<SweepPoint>& g) {
 // A rate below this is no convergence over the sweep's range.
 constexpr double min_rate = 0.2;
 
+std::string num3(double x) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
 }  // namespace
+
+Richardson richardson(const std::vector<double>& h_in, const std::vector<double>& q_in) {
+  Richardson r;
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t i = 0; i < h_in.size() && i < q_in.size(); ++i)
+    if (h_in[i] > 0 && std::isfinite(q_in[i])) pts.emplace_back(h_in[i], q_in[i]);
+  std::sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });  // coarsest first
+  r.points = static_cast<int>(pts.size());
+  if (pts.size() < 3) {
+    r.reason = std::to_string(pts.size()) + " run(s), Richardson needs three resolutions";
+    return r;
+  }
+  const std::size_t n = pts.size();
+  const auto& [h1, q1] = pts[n - 3];
+  const auto& [h2, q2] = pts[n - 2];
+  const auto& [h3, q3] = pts[n - 1];
+  if (!(h1 > h2 && h2 > h3)) {
+    r.reason = "two runs share a resolution";
+    return r;
+  }
+  std::string why;
+  r.order = observed_order(h1, h2, h3, q1, q2, q3, why);
+  if (r.order <= 0) {
+    r.reason = why + " (values " + num3(q1) + ", " + num3(q2) + ", " + num3(q3) + " at h " + num3(h1) + ", " + num3(h2) +
+               ", " + num3(h3) + ")";
+    return r;
+  }
+  const double p = r.order;
+  r.limit = q3 - (q2 - q3) * std::pow(h3, p) / (std::pow(h2, p) - std::pow(h3, p));
+  if (p < richardson_min_order) {
+    r.reason = "observed order " + num3(p) + " below " + num3(richardson_min_order) + " (values " + num3(q1) + ", " +
+               num3(q2) + ", " + num3(q3) + " at h " + num3(h1) + ", " + num3(h2) + ", " + num3(h3) +
+               "): the extrapolated limit " + num3(r.limit) + " would lie further from the finest run than the sweep moved";
+    return r;
+  }
+  if (n >= 4) {
+    const auto& [h0, q0] = pts[n - 4];
+    std::string why0;
+    r.order_check = observed_order(h0, h1, h2, q0, q1, q2, why0);
+    if (!(std::abs(r.order_check - p) <= 0.3 * std::max(r.order_check, p))) {
+      r.reason = "the observed order of the three finest runs, " + num3(p) + ", and of the next coarser three, " +
+                 (r.order_check > 0 ? num3(r.order_check) : "none (" + why0 + ")") +
+                 ", differ by more than 30 % (not in the asymptotic range)";
+      return r;
+    }
+  }
+  if (r.limit == 0.0 || !std::isfinite(r.limit)) {
+    r.reason = "the extrapolated limit is zero: no relative error";
+    return r;
+  }
+  r.ok = true;
+  return r;
+}
 
 // time = offset + factor * estimate, least squares on the relative residual (offset >= 0).
 void fit_affine_time(const std::vector<double>& est, const std::vector<double>& sec, GroupModel& g) {
@@ -207,6 +297,7 @@ std::vector<Candidate> predict(const std::vector<SweepPoint>& points, const std:
     for (std::size_t i = 0; i < pts.size(); ++i) {
       Candidate c;
       c.point = pts[i];
+      c.reference = g.reference;
       if (g.converges) {
         c.predicted_error = std::max(g.bound * std::pow(pts[i].h, g.fit.rate), g.floor);
         c.beyond_floor = i > k;
@@ -255,6 +346,11 @@ Plan choose(const Model& model, double target) {
     return plan;
   }
   plan.refused = true;
+  if (usable.empty() && !model.unusable.empty()) {  // nothing to choose from: say why, not "below"
+    plan.reason = "the sweep (" + model.csv.string() + ") gives no error estimate for " + model.quantity_text + ": " +
+                  model.unusable;
+    return plan;
+  }
   std::ostringstream why;
   char buf[96];
   std::snprintf(buf, sizeof buf, "%.3g", target);
@@ -294,6 +390,9 @@ namespace {
 
 struct QuantitySpec {
   std::string key, column, summary_key, text;
+  // the column (and the summary key) is the quantity's value, with no analytic reference: errors against
+  // each group's Richardson limit
+  bool richardson = false;
 };
 
 struct Level {
@@ -372,6 +471,27 @@ std::string edit_efg(toml::table& t, const Level& l) {
 std::string edit_dem(toml::table& t, const Level& l) {
   section(t, "time").insert_or_assign("steps_per_contact", l.resolution);
   return "";  // dem_benchmark has no presets
+}
+
+// The ISPH floating cylinder (bench/sweep_isph_float.py): spacing = D / across, dt = 0.1 s/m x spacing, no
+// snapshots, at the scene's paper preset.
+std::string edit_isph(toml::table& t, const Level& l) {
+  const double d = section(t, "body")["diameter"].value<double>().value_or(0.1);
+  const double spacing = d / l.resolution;
+  section(t, "fluid").insert_or_assign("spacing", spacing);
+  auto& time = section(t, "time");
+  time.insert_or_assign("dt", 0.1 * spacing);
+  time.insert_or_assign("snapshot_every", 0.0);
+  set_accuracy(t, "paper", 1.0);
+  return "paper";
+}
+
+// The PD penetration sweep (bench/sweep_pd_penetration --cv 0.3): coarsening, horizon ratio, c_v = 0.3.
+std::string edit_pd_penetration(toml::table& t, const Level& l) {
+  section(t, "discretization").insert_or_assign("horizon_ratio", l.order);
+  section(t, "stabilization").insert_or_assign("c_v", 0.3);
+  set_accuracy(t, "draft", l.resolution);
+  return "draft";
 }
 
 const std::vector<Case>& cases() {
@@ -531,6 +651,62 @@ const std::vector<Case>& cases() {
        {},
        true,
        ""},
+      {"ISPH floating cylinder",
+       "isph",
+       "isph",
+       {"floating_cylinder_small_divergence"},
+       "docs/figures/isph/float_accuracy_cost_precision.csv",
+       "/usr/bin/python3 bench/sweep_isph_float.py --app build/release/bin/isph --scene "
+       "scenes/isph/floating_cylinder_small_divergence.toml --precision double|float (the two sweep.csv concatenated)",
+       "across",
+       "spacing",
+       "",
+       "precision_bits",
+       "cpu_seconds",
+       "",
+       "particles across the cylinder",
+       "",
+       {{"draft", "error_volume", "draft_relative_error",
+         "equilibrium draft of a cylinder of density ratio 0.8 (relative error against Archimedes)"}},
+       [](const fs::path& f, const Level& l) {
+         const EditedScene e(f, edit_isph, l);
+         return one_thread(load_isph_scene(e.file, {"paper", precision(l.single)}).cost);
+       },
+       edit_isph,
+       "isph",
+       {},
+       true,  // the sweep timed whole processes
+       ""},
+      {"PD penetration",
+       "nosb_pd",
+       "pd_penetration",
+       {"penetration_303"},
+       "docs/figures/pd/accuracy_cost_penetration.csv",
+       "build/release/bench/sweep_pd_penetration --threads 1 --coarsening 4,2,1 --precision double,float "
+       "--horizon-ratio 2,3,4 --cv 0.3 --name accuracy_cost_penetration (docs/VALIDATION.md, PD accuracy against cost)",
+       "coarsening",
+       "spacing",
+       "horizon_ratio",
+       "is_float",
+       "wall_seconds",
+       "",
+       "coarsening",
+       "horizon ratio",
+       {{"residual_velocity", "residual_velocity", "residual_velocity",
+         "residual velocity of the projectile at 303.5 m/s, c_v = 0.3 (relative error against the Richardson limit)", true}},
+       [](const fs::path& f, const Level& l) {
+         const EditedScene e(f, edit_pd_penetration, l);
+         NosbPdSceneOptions o;
+         o.coarsening = l.resolution;
+         o.precision = precision(l.single);
+         o.horizon_ratio = l.order;
+         return one_thread(load_nosb_pd_scene(e.file, o).cost);
+       },
+       edit_pd_penetration,
+       "pd",
+       {{"c_v", 0.3}},
+       false,
+       ""},
   };
   return c;
 }
@@ -620,7 +796,7 @@ Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, c
     p.h = h >= 0 ? r[h] : 1.0 / r[res];
     p.order = ord >= 0 ? r[ord] : 0.0;
     p.single = prec >= 0 && (bits ? r[prec] == 32 : r[prec] != 0);
-    p.error = std::abs(r[err]);
+    p.error = q->richardson ? r[err] : std::abs(r[err]);  // Richardson: the value, made an error below
     p.seconds = r[tm];
     p.steps = st >= 0 ? static_cast<std::int64_t>(r[st]) : 0;
     if (!std::isfinite(p.error)) continue;
@@ -628,9 +804,51 @@ Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, c
     pts.push_back(p);
   }
   if (pts.empty()) throw PlanError((root / m.csv).string() + ": no sweep point with a finite " + q->column);
-  m.groups = fit_groups(pts, cs.affine_time);
-  m.candidates = predict(pts, m.groups);
   m.reference_note = cs.reference_note;
+  std::vector<std::pair<std::pair<double, bool>, Richardson>> limits;  // (order, single) -> its extrapolation
+  if (q->richardson) {
+    // no analytic reference: each (order, precision) group's errors against its own Richardson limit;
+    // groups where Richardson is not usable are left out, with the reason
+    m.richardson = true;
+    std::vector<SweepPoint> kept;
+    std::string notes;
+    for (const auto& p : pts) {
+      bool seen = false;
+      for (const auto& l : limits) seen = seen || (l.first.first == p.order && l.first.second == p.single);
+      if (seen) continue;
+      std::vector<double> hs, qs;
+      for (const auto& o : pts)
+        if (o.order == p.order && o.single == p.single) hs.push_back(o.h), qs.push_back(o.error);
+      limits.push_back({{p.order, p.single}, richardson(hs, qs)});
+    }
+    for (const auto& [key, r] : limits) {
+      std::string name = key.second ? "float" : "double";
+      if (!cs.order_name.empty()) name = cs.order_name + " " + num3(key.first) + " " + name;
+      if (r.ok) {
+        notes += (notes.empty() ? "" : "; ") + name + ": limit " + num3(r.limit) + ", observed order " + num3(r.order);
+        for (auto p : pts)
+          if (p.order == key.first && p.single == key.second) {
+            p.error = std::abs(p.error - r.limit) / std::abs(r.limit);
+            kept.push_back(p);
+          }
+      } else {
+        m.unusable += (m.unusable.empty() ? "" : "; ") + name + ": " + r.reason;
+      }
+    }
+    m.reference_note = "no analytic reference; errors against the Richardson limit of each group's three finest runs (" +
+                       (notes.empty() ? std::string("none usable") : notes) +
+                       "); the finest run's error is an estimate, not a measurement";
+    pts = kept;
+    if (!pts.empty() && !m.unusable.empty()) {  // the plan chooses among the usable groups; the others are named
+      m.reference_note += "; left out: " + m.unusable;
+      m.unusable.clear();
+    }
+  }
+  m.groups = fit_groups(pts, cs.affine_time);
+  for (auto& g : m.groups)
+    for (const auto& [key, r] : limits)
+      if (r.ok && key.first == g.order && key.second == g.single) g.reference = r.limit, g.reference_order = r.order;
+  m.candidates = predict(pts, m.groups);
   if (with_overhead) {
     // the app's fixed cost, measured against this model by `polymech plan --measure-overhead`
     const fs::path oh = root / overhead_csv();
@@ -709,21 +927,27 @@ std::vector<fs::path> overhead_scenes(const fs::path& root) {
 std::string fit_report(const fs::path& root) {
   std::ostringstream s;
   s << "| case | quantity | " << "order | precision | points | rate | constant | log rms | bound | floor | time factor | "
-       "time exponent | time log rms | time offset |\n";
-  s << "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+       "time exponent | time log rms | time offset | reference |\n";
+  s << "| --- | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
   for (const auto& cs : cases())
     for (const auto& stem : cs.scenes) {
       const fs::path scene = root / "scenes" / scene_dir(cs) / (stem + ".toml");
       if (!fs::exists(root / expand(cs.csv, stem)) || !fs::exists(scene)) continue;
       for (const auto& q : cs.quantities) {
         const Model m = model_of(cs, scene, stem, root, q.key);
+        if (m.groups.empty() && !m.unusable.empty())
+          s << "| " << cs.name << " `" << stem << "` | " << q.key << " | - | - | - | Richardson not usable: " << m.unusable
+            << " | | | | | | | | | Richardson |\n";
         for (const auto& g : m.groups)
           s << "| " << cs.name << " `" << stem << "` | " << q.key << " | " << (m.order_name.empty() ? "-" : number(g.order))
             << " | " << (g.single ? "float" : "double") << " | " << g.points << " | "
             << (g.converges ? number(g.fit.rate) : "no convergence") << " | " << number(g.fit.constant) << " | "
             << number(g.fit.log_rms) << " | " << (g.converges ? number(g.bound) : "envelope") << " | "
             << (g.floor > 0 ? number(g.floor) : "-") << " | " << number(g.time_factor) << " | " << number(g.time_exponent) << " | " << number(g.time_log_rms)
-            << " | " << (g.time_offset > 0 ? number(g.time_offset) : "-") << " |\n";
+            << " | " << (g.time_offset > 0 ? number(g.time_offset) : "-") << " | "
+            << (std::isfinite(g.reference) ? "Richardson " + number(g.reference) + " (p " + number(g.reference_order) + ")"
+                                           : std::string("analytic"))
+            << " |\n";
       }
     }
   return s.str();
@@ -784,6 +1008,7 @@ std::string describe_plan(const Model& model, const Plan& plan, double target) {
   } else {
     s << "  refused: " << plan.reason << "\n";
   }
+  if (plan.pareto.empty()) return s.str();
   s << "  Pareto front (" << plan.pareto.size()
     << " points; predicted error against predicted time; * chosen, x misses the target; nearest 9 shown):\n";
   s << "    " << (model.order_name.empty() ? "" : model.order_name + " / ") << "precision / " << model.resolution_name

@@ -8,6 +8,7 @@
 // a Kokkos session, as `polymech` does).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -36,6 +37,24 @@ struct PowerLaw {
   int points = 0;
 };
 PowerLaw fit_power_law(const std::vector<double>& h, const std::vector<double>& e);
+
+// Richardson extrapolation (issue 38: a quantity with no analytic reference): q(h) = q0 + C h^p through the
+// three finest runs h1 > h2 > h3 of a group, p from (q1 - q2) / (q2 - q3) = (h1^p - h2^p) / (h2^p - h3^p)
+// (any ratios of h), q0 = q3 - (q2 - q3) h3^p / (h2^p - h3^p). Not usable (ok false, with the reason) when
+// fewer than three runs, the changes alternate in sign or do not shrink (no p > 0), the observed order is
+// below min_order (the extrapolated correction would exceed what the sweep moved; the limit is a guess),
+// or, with a fourth run, the order of the next coarser three differs by more than 30 % (not yet in the
+// asymptotic range).
+struct Richardson {
+  bool ok = false;
+  std::string reason;
+  double limit = 0.0;        // q0
+  double order = 0.0;        // p of the three finest runs
+  double order_check = 0.0;  // p of the next coarser three (0: fewer than four runs)
+  int points = 0;
+};
+constexpr double richardson_min_order = 0.5;
+Richardson richardson(const std::vector<double>& h, const std::vector<double>& q);
 
 // One measured run of a sweep.
 struct SweepPoint {
@@ -66,6 +85,10 @@ struct GroupModel {
   // time_factor * estimate, least squares on the relative residual (time_exponent 1)
   double time_offset = 0.0;
   int points = 0;
+  // where the quantity has no analytic reference: the group's Richardson limit that its errors are
+  // measured against (NaN: an analytic reference)
+  double reference = NAN;
+  double reference_order = 0.0;
 };
 
 // A choice the plan can make: one sweep point with its predicted error and time.
@@ -74,6 +97,7 @@ struct Candidate {
   double predicted_error = 0.0;
   double predicted_seconds = 0.0;
   bool beyond_floor = false;  // finer than the group's best run: never chosen (dominated)
+  double reference = NAN;     // the group's Richardson limit (NaN: analytic reference; the app reports the error)
 };
 
 // The fitted models of one scene's quantity.
@@ -82,7 +106,7 @@ struct Model {
   std::string app;          // the app that runs it
   std::string quantity;     // key (cp, l2, modulus)
   std::string quantity_text;
-  std::string summary_key;  // the key of the achieved error in the app's summary.json
+  std::string summary_key;  // the key of the achieved error in the app's summary.json (Richardson: of the value)
   std::string resolution_name, order_name;
   std::filesystem::path csv;  // the sweep data, relative to the source folder
   std::string sweep_command;  // how the CSV is made
@@ -94,6 +118,9 @@ struct Model {
   std::string overhead_source;
   // where the quantity has no analytic reference: the sweep's errors are against a Richardson extrapolation
   std::string reference_note;
+  bool richardson = false;
+  // not empty: no group of the sweep gives an error estimate (Richardson not usable); every target is refused
+  std::string unusable;
 };
 
 // Groups sweep points by (order, precision) and fits each (error model: power law over the points up to

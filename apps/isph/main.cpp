@@ -108,6 +108,8 @@ int run_case(const pm::io::IsphScene& scene, const pm::apps::CommonOptions& opt,
     j["draft_over_diameter"] = rec.draft_mean(rec.draft_sum, series["draft_over_diameter"]);
     j["draft_over_diameter_surface_particles"] = rec.draft_mean(rec.draft_s_sum, series["draft_over_diameter_surface_particles"]);
     j["draft_averaged_over_samples"] = rec.draft_count;
+    // against Archimedes (the relative error `polymech plan` reads; bench/sweep_isph_float.py's error_volume)
+    j["draft_relative_error"] = j["draft_over_diameter"].get<double>() / ip::archimedes_draft_over_diameter(c.body.density_ratio) - 1.0;
   }
   std::vector<std::string> csv(series.names().begin(), series.names().begin() + rec.written_columns());
   series.write_csv(cs.out() / "series.csv", csv);

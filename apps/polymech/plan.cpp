@@ -194,9 +194,15 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
       std::ifstream in(out / "summary.json");
       if (in) {
         const auto s = nlohmann::json::parse(in, nullptr, false);
-        if (!s.is_discarded() && s.contains(model.summary_key) && s[model.summary_key].is_number())
-          achieved = std::abs(s[model.summary_key].get<double>());
+        if (!s.is_discarded() && s.contains(model.summary_key) && s[model.summary_key].is_number()) {
+          const double v = s[model.summary_key].get<double>();
+          // Richardson: the run's value against the chosen group's extrapolated limit
+          achieved = std::isfinite(plan.choice.reference) ? std::abs(v - plan.choice.reference) / std::abs(plan.choice.reference)
+                                                          : std::abs(v);
+          if (std::isfinite(plan.choice.reference)) j["achieved_value"] = v;
+        }
       }
+      if (std::isfinite(plan.choice.reference)) j["richardson_limit"] = plan.choice.reference;
       j["achieved_error"] = std::isfinite(achieved) ? nlohmann::json(achieved) : nlohmann::json(nullptr);
       j["target_met"] = std::isfinite(achieved) && achieved <= target;
       j["time_ratio"] = r.cpu / plan.choice.predicted_seconds;  // measured CPU / predicted
