@@ -73,8 +73,8 @@ CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
     c.step_name = "fluid Newton iterations over ~" + format_number(e) + " coupling evaluations (estimate)";
     c.seconds = c.steps * iteration + 0.08 * std::pow(unknowns / 9106.0, 1.4);
     // the fluid's LU (as above) and the mesh motion's (~0.9 N unknowns, two fields of Q2 nodes: sparser): resident
-    // 102 MB at level 1 and 539 MB at level 2 measured (apps/turek_hron, one thread) against 147 / 563 MB here
-    c.bytes = 30e6 + 1.3 * unknowns * (2e3 + 600.0 * std::log2(std::max(2.0, unknowns)));
+    // 102 MB, 539 MB, 2.62 GB at levels 1-3 measured (apps/turek_hron, one thread) against 160, 625 MB, 2.68 GB here
+    c.bytes = 30e6 + 1.45 * unknowns * (2e3 + 600.0 * std::log2(std::max(2.0, unknowns)));
     c.rate = "a fluid Newton iteration ~ 0.15 s x (unknowns / 9106)^1.6, 8 + 2 per coupling evaluation (1 thread, notes h-fsi1)";
   }
   return c;
