@@ -63,7 +63,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
   domain.finish();
 
   // The size of the run, refused before anything is computed over the lattice if it cannot fit.
-  const me::Lattice lattice = me::make_lattice(c);
+  me::Lattice lattice = me::make_lattice(c);  // again after a [crop]
   const auto size_keys = [&] {
     return std::vector<std::string>{"domain.width = " + format_number(c.width) + " m",
                                     "domain.height = " + format_number(c.height) + " m",
@@ -189,6 +189,27 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
                              names_of(c.probes) + ")";
     if (an) an->fail("harmonics_probe", "is missing or empty; " + what);
     cr->fail_table("needs [analysis] harmonics_probe: " + what);
+  }
+
+  // [crop]: the reduced-size crack case of the accuracy-cost sweep (bench/sweep_mps_harmonics, `polymech plan`):
+  // the plate cut down around the crack (mps_elastic::crop_around_crack: the crack centred across `width`,
+  // `depth` of plate above it, `below` under it; probes keep their offsets, those outside are dropped) and
+  // the run ended when the burst has passed the harmonics probe (the [time] steps are then not used)
+  if (auto cp = root.optional_table("crop")) {
+    if (!cr) cp->fail_table("needs a [crack] to crop around");
+    const double width = cp->real("width", pl::length());
+    const double depth = cp->real("depth", pl::length());
+    const double below = cp->real("below", pl::length());
+    cp->finish();
+    if (width < c.crack.length + 4 * c.spacing)
+      cp->fail("width", "= " + format_number(width) + " m leaves no plate beside the crack (length " +
+                            format_number(c.crack.length) + " m); allowed: width >= crack length + 4 spacings");
+    me::crop_around_crack(c, width, depth, below);
+    if (std::none_of(c.probes.begin(), c.probes.end(), [&](const me::Probe& p) { return p.name == out.harmonics_probe; }))
+      cp->fail_table("drops the harmonics probe '" + out.harmonics_probe + "' (outside the cropped plate); allowed: a crop "
+                     "that keeps it (depth and below around the crack)");
+    lattice = me::make_lattice(c);
+    if (options.steps <= 0) c.steps = me::steps_until_burst_passes(c, out.harmonics_probe);
   }
 
   // [output]

@@ -11,6 +11,7 @@
 
 #include "analysis/signals.hpp"
 #include "common/run.hpp"
+#include "mps_elastic/burst.hpp"
 #include "mps_elastic/mps_elastic.hpp"
 
 namespace polymech::mps_elastic {
@@ -54,12 +55,6 @@ struct WaveSpeeds {
   double cs = std::numeric_limits<double>::quiet_NaN();
   analysis::SpeedMeasurement p, s;
 };
-
-inline const Probe& probe_named(const Config& c, const std::string& name) {
-  for (const auto& p : c.probes)
-    if (p.name == name) return p;
-  throw std::invalid_argument("no probe named '" + name + "'");
-}
 
 // P- and S-wave speeds from arrival-time differences (seed 000 §5.1: cp = sqrt((C13 + 2 C55)/rho),
 // cs = sqrt(C55/rho)): the P front in the divergence field at two probes on one ray from the source,

@@ -1,8 +1,9 @@
 // What io/ needs of the MPS elastic-wave model without compiling it (this header is free of Kokkos):
 // the effects, the lattice and the excitation's source, the crack's cut bonds, and the stable time step
-// of a configuration (defined in setup.cpp, compiled with the model).
+// of a configuration (defined in setup.cpp, compiled with the model); the crop and the burst's timing.
 #pragma once
 
+#include "mps_elastic/burst.hpp"
 #include "mps_elastic/config.hpp"
 #include "mps_elastic/crack_bonds.hpp"
 #include "mps_elastic/effect_table.hpp"

@@ -236,3 +236,32 @@ TEST(Scenes, TheMemoryLimitOverrideIsChecked) {
   ::unsetenv("POLYMECH_MEMORY_LIMIT");
   EXPECT_GT(io::available_memory(), 0.0);
 }
+
+// [crop] (the accuracy-cost sweep's reduced crack case, `polymech plan`): the plate is cut to width x
+// (depth + below) around the crack, the probes that fall outside are dropped, the run ends when the burst has
+// passed the harmonics probe, and the cost counts the cropped plate; a crop with no crack is refused.
+TEST(Scenes, CropCutsTheCrackCaseDown) {
+  io::MpsSceneOptions o;
+  o.accuracy = "draft";
+  const auto full = io::load_mps_elastic_scene(source_dir() / "scenes/mps/crack_p_wave.toml", o);
+  const auto crop = io::load_mps_elastic_scene(source_dir() / "scenes/mps/crack_p_wave_cropped.toml", o);
+  EXPECT_DOUBLE_EQ(crop.config.width, 0.04);
+  EXPECT_NEAR(crop.config.height, 0.022, 1e-15);
+  EXPECT_NEAR(crop.config.crack.x1, 0.02, 1e-15);
+  EXPECT_NEAR(crop.config.crack.x3, 0.012, 1e-15);
+  ASSERT_EQ(crop.config.probes.size(), 2u);  // A and A_far keep their offsets from the crack
+  EXPECT_EQ(crop.config.probes[0].name, "A");
+  EXPECT_NEAR(crop.config.probes[0].x3, 0.0115, 1e-15);
+  EXPECT_NEAR(crop.config.probes[1].x3, 0.0045, 1e-15);
+  // the burst crosses 10.5 mm to A at c_p ~ 5.9 km/s (1.8 us), then 6 periods of 0.5 us: 4.8 us at dt 8 ns
+  EXPECT_EQ(crop.config.steps, 594);
+  EXPECT_LT(crop.cost.seconds, 0.5 * full.cost.seconds);
+  polymech::testing::TempDir t;
+  const std::string text = std::string(kBase) + "\n[crop]\nwidth = 0.003\ndepth = 0.001\nbelow = 0.001\n";
+  try {
+    io::load_mps_elastic_scene(t.write("scene.toml", text));
+    FAIL() << "a crop without a crack loaded";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs a [crack] to crop around"), std::string::npos) << e.what();
+  }
+}
