@@ -581,7 +581,7 @@ const std::vector<Case>& cases() {
        "spacing",
        "horizon_ratio",
        "is_float",
-       "wall_seconds",
+       "cpu_seconds|wall_seconds",
        "",
        "coarsening",
        "horizon ratio",
@@ -650,6 +650,43 @@ const std::vector<Case>& cases() {
        "dem",
        {},
        true,
+       ""},
+      {"MPS crack harmonics",
+       "mps_elastic",
+       "mps_harmonics",
+       {"crack_p_wave_cropped"},
+       "docs/figures/mps/{stem}.csv",
+       "build/release/bench/sweep_mps_harmonics --scene scenes/mps/{stem}.toml --coarsening 4,2,1 --precision double,float "
+       "--threads 1 --out docs/figures/mps",
+       "coarsening",
+       "spacing",
+       "",
+       "is_float",
+       "cpu_seconds",
+       "",
+       "coarsening",
+       "",
+       {{"r3", "crack_r3", "ratios_crack/2",
+         "third-harmonic ratio A3/A1 at probe A behind the crack (relative error against the Richardson limit)", true},
+        {"r2", "crack_r2", "ratios_crack/1",
+         "second-harmonic ratio A2/A1 at probe A behind the crack (relative error against the Richardson limit)", true},
+        {"r4", "crack_r4", "ratios_crack/3",
+         "fourth-harmonic ratio A4/A1 at probe A behind the crack (relative error against the Richardson limit)", true},
+        {"r5", "crack_r5", "ratios_crack/4",
+         "fifth-harmonic ratio A5/A1 at probe A behind the crack (relative error against the Richardson limit)", true}},
+       [](const fs::path& f, const Level& l) {
+         MpsSceneOptions o;
+         o.coarsening = l.resolution;
+         o.precision = precision(l.single);
+         return one_thread(load_mps_elastic_scene(f, o).cost);
+       },
+       [](toml::table& t, const Level& l) {
+         set_accuracy(t, "draft", l.resolution);
+         return std::string("draft");
+       },
+       "mps",
+       {},
+       false,
        ""},
       {"ISPH floating cylinder",
        "isph",
@@ -779,8 +816,16 @@ Model model_of(const Case& cs, const fs::path& scene, const std::string& stem, c
     if (k < 0) throw PlanError((root / m.csv).string() + ": no column '" + name + "'");
     return k;
   };
+  // "a|b": the first of the columns the CSV has (CPU seconds where the sweep records them, else wall seconds)
+  auto first_col = [&](const std::string& names) {
+    std::stringstream ss(names);
+    std::string name;
+    while (std::getline(ss, name, '|'))
+      if (t.column(name) >= 0) return t.column(name);
+    return col(names);
+  };
   const int res = col(cs.resolution_column), h = col(cs.h_column), ord = col(cs.order_column),
-            prec = col(cs.precision_column), tm = col(cs.time_column), st = col(cs.steps_column), err = col(q->column);
+            prec = col(cs.precision_column), tm = first_col(cs.time_column), st = col(cs.steps_column), err = col(q->column);
   const int status = t.column("status");  // Helmholtz: 0 = converged
   std::vector<std::pair<int, double>> where;
   for (const auto& [name, value] : cs.where) where.emplace_back(col(name), value);

@@ -194,8 +194,19 @@ int plan_main(int argc, char** argv, const fs::path& self_dir) {
       std::ifstream in(out / "summary.json");
       if (in) {
         const auto s = nlohmann::json::parse(in, nullptr, false);
-        if (!s.is_discarded() && s.contains(model.summary_key) && s[model.summary_key].is_number()) {
-          const double v = s[model.summary_key].get<double>();
+        // the key, or "key/k": element k of an array (the harmonic ratios)
+        nlohmann::json value;
+        if (!s.is_discarded()) {
+          const auto slash = model.summary_key.find('/');
+          const std::string key = model.summary_key.substr(0, slash);
+          if (s.contains(key)) value = s[key];
+          if (slash != std::string::npos) {
+            const std::size_t k = std::stoul(model.summary_key.substr(slash + 1));
+            value = value.is_array() && k < value.size() ? value[k] : nlohmann::json();
+          }
+        }
+        if (value.is_number()) {
+          const double v = value.get<double>();
           // Richardson: the run's value against the chosen group's extrapolated limit
           achieved = std::isfinite(plan.choice.reference) ? std::abs(v - plan.choice.reference) / std::abs(plan.choice.reference)
                                                           : std::abs(v);
