@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "solid/explicit_dynamics.hpp"
 #include "solid/hyperelastic_explicit.hpp"
 #include "solid/rigid_tie.hpp"
 
@@ -71,59 +72,26 @@ template <class T, int D>
 inline void HyperelasticExplicit<T, D>::place_tied(std::size_t k, bool velocities) {
   const Body& b = body_[k];
   const TieState<D>& s = state_[k];
-  const double ct = std::cos(s.angle), st = std::sin(s.angle);
-  const double n0 = b.axis[0], n1 = b.axis[1], n2 = b.axis[2];
-  double c[3] = {0, 0, 0}, c0[3] = {0, 0, 0}, V[3] = {0, 0, 0};
+  TiedPose pose;
+  pose.ct = std::cos(s.angle);
+  pose.st = std::sin(s.angle);
+  pose.n0 = b.axis[0];
+  pose.n1 = b.axis[1];
+  pose.n2 = b.axis[2];
   for (int d = 0; d < D; ++d) {
-    c[d] = s.position[static_cast<std::size_t>(d)];
-    c0[d] = b.centre[static_cast<std::size_t>(d)];
-    V[d] = s.velocity[static_cast<std::size_t>(d)];
+    pose.c[d] = s.position[static_cast<std::size_t>(d)];
+    pose.c0[d] = b.centre[static_cast<std::size_t>(d)];
+    pose.V[d] = s.velocity[static_cast<std::size_t>(d)];
   }
-  const double w = s.omega;
-  const auto nodes = b.node_view;
-  const auto off = b.offsets;
-  const auto u = u_, v = v_;
-  Kokkos::parallel_for(
-      "polymech::solid::fse_place_tied", range(static_cast<Index>(b.nodes.size())), KOKKOS_LAMBDA(const Index j) {
-        const Index i = nodes(j);
-        double x[3] = {0, 0, 0}, y[3] = {0, 0, 0};
-        for (int d = 0; d < D; ++d) x[d] = off(j, d);
-        if (D == 2) {
-          y[0] = ct * x[0] - st * x[1];
-          y[1] = st * x[0] + ct * x[1];
-        } else {
-          const double nx = n0 * x[0] + n1 * x[1] + n2 * x[2];
-          const double cr[3] = {n1 * x[2] - n2 * x[1], n2 * x[0] - n0 * x[2], n0 * x[1] - n1 * x[0]};
-          const double nn[3] = {n0, n1, n2};
-          for (int d = 0; d < 3; ++d) y[d] = ct * x[d] + st * cr[d] + (1.0 - ct) * nx * nn[d];
-        }
-        for (int d = 0; d < D; ++d) u(D * i + d) = static_cast<T>(c[d] + y[d] - (c0[d] + x[d]));
-        if (velocities) {  // V + omega n x y
-          double wy[3];
-          if (D == 2) {
-            wy[0] = -w * y[1];
-            wy[1] = w * y[0];
-          } else {
-            wy[0] = w * (n1 * y[2] - n2 * y[1]);
-            wy[1] = w * (n2 * y[0] - n0 * y[2]);
-            wy[2] = w * (n0 * y[1] - n1 * y[0]);
-          }
-          for (int d = 0; d < D; ++d) v(D * i + d) = static_cast<T>(V[d] + wy[d]);
-        }
-      });
+  pose.w = s.omega;
+  explicit_place_tied<T, D>(b.node_view, b.offsets, pose, velocities, u_, v_);
 }
 
 // The structure's force on body k: sum of -r over the tied DoFs, and its moment about c; plus the applied loads.
 template <class T, int D>
 inline void HyperelasticExplicit<T, D>::body_force(std::size_t k, double t) {
   Body& b = body_[k];
-  const auto nodes = b.node_view;
-  const auto gath = b.gathered;
-  const auto r = r_;
-  Kokkos::parallel_for(
-      "polymech::solid::fse_gather_tied", range(static_cast<Index>(b.nodes.size())), KOKKOS_LAMBDA(const Index j) {
-        for (int d = 0; d < D; ++d) gath(j, d) = -r(D * nodes(j) + d);
-      });
+  explicit_gather_tied<T, D>(b.node_view, r_, b.gathered);
   const auto gh = Kokkos::create_mirror_view_and_copy(HostSpace(), b.gathered);
   const auto oh = Kokkos::create_mirror_view_and_copy(HostSpace(), b.offsets);
   TieState<D>& s = state_[k];

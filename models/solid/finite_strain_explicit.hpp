@@ -7,6 +7,8 @@
 //   hyperelastic_explicit.hpp  the options and solid::HyperelasticExplicit: velocity Verlet with a lumped mass
 //   explicit_ties.hpp          the bodies: set-up, the tied nodes' placement, the forces on and of the drivers
 //   explicit_stability.hpp     the critical step by power iteration on M_L^-1 K_t
+// Their device kernels (kick, drift, accelerations, the tied nodes, the power iteration) are in
+// kernels/solid/explicit_dynamics.hpp.
 // This header includes them all.
 #pragma once
 

@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "solid/explicit_dynamics.hpp"
 #include "solid/hyperelastic.hpp"
 #include "solid/rigid_tie.hpp"
 
@@ -109,11 +110,7 @@ class HyperelasticExplicit {
 
   // Kinetic energy: the nodes (tied ones moving with the body) and the body's own mass and inertia.
   double kinetic_energy() const {
-    const auto v = v_, m = mass_;
-    double e = 0.0;
-    Kokkos::parallel_reduce(
-        "polymech::solid::fse_kinetic", range(solid_.dof_count()),
-        KOKKOS_LAMBDA(const Index i, double& s) { s += 0.5 * double(m(i)) * double(v(i)) * double(v(i)); }, e);
+    double e = explicit_kinetic_energy(solid_.dof_count(), mass_, v_);
     for (std::size_t k = 0; k < ties_.size(); ++k) {
       double v2 = 0.0;
       for (int d = 0; d < D; ++d) v2 += state_[k].velocity[static_cast<std::size_t>(d)] * state_[k].velocity[static_cast<std::size_t>(d)];
@@ -135,17 +132,7 @@ class HyperelasticExplicit {
   void step() {
     const double t0 = t_, t1 = t0 + dt_, h = 0.5 * dt_;
     const Index n = solid_.dof_count();
-    {  // the free nodes: kick and drift
-      const auto u = u_, v = v_, a = a_;
-      const auto kind = kind_;
-      const T th = static_cast<T>(h), tdt = static_cast<T>(dt_);
-      Kokkos::parallel_for(
-          "polymech::solid::fse_kick_drift", range(n), KOKKOS_LAMBDA(const Index i) {
-            if (kind(i) != 0) return;
-            v(i) += th * a(i);
-            u(i) += tdt * v(i);
-          });
-    }
+    explicit_kick_drift(n, kind_, u_, v_, a_, static_cast<T>(h), static_cast<T>(dt_));  // the free nodes: kick and drift
     for (std::size_t k = 0; k < ties_.size(); ++k) {  // the bodies: kick (or prescribe) and drift
       TieState<D>& s = state_[k];
       for (int q = 0; q <= D; ++q) {
@@ -158,15 +145,7 @@ class HyperelasticExplicit {
       place_tied(k, false);
     }
     evaluate(t1);
-    {  // the free nodes: second kick
-      const auto v = v_, a = a_;
-      const auto kind = kind_;
-      const T th = static_cast<T>(h);
-      Kokkos::parallel_for(
-          "polymech::solid::fse_kick", range(n), KOKKOS_LAMBDA(const Index i) {
-            if (kind(i) == 0) v(i) += th * a(i);
-          });
-    }
+    explicit_kick(n, kind_, v_, a_, static_cast<T>(h));  // the free nodes: second kick
     for (std::size_t k = 0; k < ties_.size(); ++k) {
       TieState<D>& s = state_[k];
       for (int q = 0; q <= D; ++q) {
@@ -206,7 +185,8 @@ class HyperelasticExplicit {
   }
 
  public:
-  // Implementation (public only for nvcc's extended lambdas, docs/DEVELOPING.md).
+  // Implementation (public: it held nvcc's extended lambdas, docs/DEVELOPING.md; the kernels are now in
+  // kernels/solid/explicit_dynamics.hpp).
   struct Body {
     double mass = 0.0, inertia = 0.0;
     std::array<double, 3> centre{}, axis{0.0, 0.0, 1.0};
@@ -243,13 +223,7 @@ class HyperelasticExplicit {
                                models::format_g(dt_) + " is unstable here (critical step at the start " +
                                models::format_g(dt_crit_) + ") or the load is too large");
     if (external_) external_(t, u_, v_, r_);
-    const auto a = a_, r = r_, v = v_, m = mass_;
-    const auto kind = kind_;
-    const T alpha = static_cast<T>(o_.damping);
-    Kokkos::parallel_for(
-        "polymech::solid::fse_accelerate", range(solid_.dof_count()), KOKKOS_LAMBDA(const Index i) {
-          a(i) = kind(i) == 0 ? -r(i) / m(i) - alpha * v(i) : T(0);
-        });
+    explicit_accelerate(solid_.dof_count(), kind_, r_, mass_, v_, static_cast<T>(o_.damping), a_);
     for (std::size_t k = 0; k < ties_.size(); ++k) body_force(k, t);
   }
 
