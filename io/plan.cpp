@@ -473,6 +473,20 @@ std::string edit_dem(toml::table& t, const Level& l) {
   return "";  // dem_benchmark has no presets
 }
 
+// MPS (point source, crack harmonics): the coarsening as the draft preset's factor; the sweep's steps where it
+// sets them (0: the scene's, or the crop's until the burst has passed the probe).
+double estimate_mps(const fs::path& f, const Level& l) {
+  MpsSceneOptions o;
+  o.coarsening = l.resolution;
+  o.precision = precision(l.single);
+  o.steps = l.steps;
+  return one_thread(load_mps_elastic_scene(f, o).cost);
+}
+std::string edit_draft(toml::table& t, const Level& l) {
+  set_accuracy(t, "draft", l.resolution);
+  return "draft";
+}
+
 // The ISPH floating cylinder (bench/sweep_isph_float.py): spacing = D / across, dt = 0.1 s/m x spacing, no
 // snapshots, at the scene's paper preset.
 std::string edit_isph(toml::table& t, const Level& l) {
@@ -512,17 +526,8 @@ const std::vector<Case>& cases() {
        "",
        {{"cp", "cp_rel_error", "cp_relative_error", "P-wave speed (relative error)"},
         {"cs", "cs_rel_error", "cs_relative_error", "S-wave speed (relative error)"}},
-       [](const fs::path& f, const Level& l) {
-         MpsSceneOptions o;
-         o.coarsening = l.resolution;
-         o.precision = precision(l.single);
-         o.steps = l.steps;
-         return one_thread(load_mps_elastic_scene(f, o).cost);
-       },
-       [](toml::table& t, const Level& l) {
-         set_accuracy(t, "draft", l.resolution);
-         return std::string("draft");
-       },
+       estimate_mps,
+       edit_draft,
        "mps",
        {},
        false,
@@ -675,16 +680,8 @@ const std::vector<Case>& cases() {
          "fourth-harmonic ratio A4/A1 at probe A behind the crack (relative error against the Richardson limit)", true},
         {"r5", "crack_r5", "ratios_crack/4",
          "fifth-harmonic ratio A5/A1 at probe A behind the crack (relative error against the Richardson limit)", true}},
-       [](const fs::path& f, const Level& l) {
-         MpsSceneOptions o;
-         o.coarsening = l.resolution;
-         o.precision = precision(l.single);
-         return one_thread(load_mps_elastic_scene(f, o).cost);
-       },
-       [](toml::table& t, const Level& l) {
-         set_accuracy(t, "draft", l.resolution);
-         return std::string("draft");
-       },
+       estimate_mps,
+       edit_draft,
        "mps",
        {},
        false,
