@@ -61,7 +61,7 @@ def main():
         ax.loglog([c["predicted_seconds"] for c in front], [c["predicted_error"] for c in front], "-", color="0.5",
                   drawstyle="steps-post", label="Pareto front (predicted)")
         ax.loglog([c["sweep_seconds"] for c in front], [max(c["sweep_error"], 1e-300) for c in front], "x", color="0.6",
-                  label="the same runs as the sweep timed them (model only, except DEM)")
+                  label="the sweep's runs, as it timed them")
         colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
         for k, p in enumerate(ps):
             col = colours[k % len(colours)]
