@@ -209,6 +209,7 @@ MpsElasticScene load_mps_elastic_scene(const std::filesystem::path& file, const 
       cp->fail_table("drops the harmonics probe '" + out.harmonics_probe + "' (outside the cropped plate); allowed: a crop "
                      "that keeps it (depth and below around the crack)");
     lattice = me::make_lattice(c);
+    check_size(cost(0.0, 1), *cp);  // a crop larger than the plate is refused like a plate too large
     if (options.steps <= 0) c.steps = me::steps_until_burst_passes(c, out.harmonics_probe);
   }
 
