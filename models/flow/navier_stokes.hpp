@@ -276,6 +276,40 @@ class NavierStokes2D {
     if (W_.extent(0) != w.size()) W_ = View1<double>("polymech::flow::W", w.size());
     copy_to(W_, w);
   }
+  // Per-node prescribed velocities (a moving wall whose velocity is known node by node, e.g. the wet nodes of an
+  // elastic body in a partitioned FSI step, models/fsi/turek_hron_fsi_transient.hpp): nodes[k] gets (values[2k],
+  // values[2k + 1]) instead of boundary_velocity, from the next solve or step on. Each node must be a Dirichlet
+  // node (a tag in dirichlet_tags); empty vectors remove the override.
+  void set_node_velocity(const std::vector<std::int64_t>& nodes, const std::vector<double>& values) {
+    if (values.size() != 2 * nodes.size())
+      throw std::invalid_argument("flow: set_node_velocity got " + std::to_string(values.size()) + " values for " +
+                                  std::to_string(nodes.size()) + " nodes (2 per node)");
+    for (const std::int64_t n : nodes)
+      if (n < 0 || n >= nn_ || !(mesh_.tags[static_cast<std::size_t>(n)] & cfg_.dirichlet_tags))
+        throw std::invalid_argument("flow: set_node_velocity: node " + std::to_string(n) + " is not a Dirichlet velocity node");
+    node_velocity_nodes_ = nodes;
+    node_velocity_values_ = values;
+  }
+
+  // The time-stepping state (the solution and the two before it, time, step count, last dt), so a driver can
+  // take the same step again (a coupling iteration of a partitioned FSI step: each iterate redoes t_n -> t_n+1).
+  struct TimeState {
+    std::vector<double> u, u_prev, u_prev2;
+    double time = 0.0, last_dt = 0.0;
+    std::int64_t steps = 0;
+  };
+  TimeState time_state() const { return TimeState{u_host_, u_prev_, u_prev2_, time_, last_dt_, steps_}; }
+  void set_time_state(const TimeState& s) {
+    if (s.u.size() != u_host_.size() || s.u_prev.size() != u_host_.size() || s.u_prev2.size() != u_host_.size())
+      throw std::invalid_argument("flow: set_time_state got a state of another size");
+    u_host_ = s.u;
+    u_prev_ = s.u_prev;
+    u_prev2_ = s.u_prev2;
+    time_ = s.time;
+    last_dt_ = s.last_dt;
+    steps_ = s.steps;
+  }
+
   // Oseen steps at the start of later solves (0 once a good initial state exists, e.g. in a coupling loop).
   void set_picard_steps(int n) { cfg_.picard_steps = std::max(0, n); }
 
@@ -448,6 +482,10 @@ class NavierStokes2D {
       u_host_[2 * static_cast<std::size_t>(n)] = v[0];
       u_host_[2 * static_cast<std::size_t>(n) + 1] = v[1];
     }
+    for (std::size_t k = 0; k < node_velocity_nodes_.size(); ++k) {
+      u_host_[2 * static_cast<std::size_t>(node_velocity_nodes_[k])] = node_velocity_values_[2 * k];
+      u_host_[2 * static_cast<std::size_t>(node_velocity_nodes_[k]) + 1] = node_velocity_values_[2 * k + 1];
+    }
     if (pinned_ >= 0) u_host_[static_cast<std::size_t>(pinned_)] = cfg_.pin_value;
   }
 
@@ -569,6 +607,8 @@ class NavierStokes2D {
   std::vector<double> values_, r_full_;
   solvers::HostSparseLU lu_;
   std::vector<double> u_host_, u_prev_, u_prev2_;
+  std::vector<std::int64_t> node_velocity_nodes_;
+  std::vector<double> node_velocity_values_;
   Forces forces_;
   FlowTimings timings_;
   double time_ = 0.0, last_dt_ = 0.0;

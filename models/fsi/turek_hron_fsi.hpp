@@ -58,6 +58,8 @@ struct TurekHronFsiCase {
   double rho_f = 1000.0, nu_f = 1e-3;     // fluid
   double rho_s = 1000.0, nu_s = 0.4, mu_s = 0.5e6;  // solid (SVK; rho_s enters only unsteady runs)
   bool arc_root = true;                   // clamp the flag on the cylinder's arc (false: straight root at x_r)
+  double ramp_time = 0.0;                 // the inflow's (1 - cos) ramp (unsteady runs: 2 s; 0: full from t = 0)
+  bool fluid_chord = false;               // the fluid's time steps keep their first factorisation (FlowConfig::chord)
   double solid_tolerance = 1e-10;         // the solid's Newton test |r| <= tol F_ref (below the coupling's)
   MeshMotionOptions mesh;
   CouplingOptions coupling;               // tolerance relative to |x~| (the wet nodes' displacement)
@@ -150,8 +152,10 @@ class TurekHronFsi {
     fc.rho = c.rho_f;
     fc.nu = c.nu_f;
     fc.level = c.level;
+    fc.ramp_time = c.ramp_time;
     flow::FlowConfig cfg = flow::turek_hron_config(fc, g);
     cfg.picard_steps = 3;
+    cfg.chord = c.fluid_chord;
     fluid_ = std::make_unique<flow::NavierStokes2D>(std::move(mesh), cfg);
     timings_.setup = seconds(c0);
   }
@@ -255,7 +259,7 @@ class TurekHronFsi {
     return out;
   }
 
- private:
+ protected:  // (the unsteady driver, models/fsi/turek_hron_fsi_transient.hpp, builds on the same set-up)
   static double seconds(std::clock_t c0) { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; }
 
   TurekHronFsiCase case_;
