@@ -25,23 +25,6 @@ namespace {
 std::int64_t total_steps = 0;  // over every run, for the rate in summary.json
 bool wrote_test4 = false;      // test4.csv, for the summary's file list
 
-// Hertz theory of the scene's impact: m*, R*, E*, approach speed.
-void hertz_of(const pm::io::DemScene& s, double& m_star, double& r_star, double& e_star, double& v) {
-  const auto& k = s.impact;
-  const double m = dm::sphere_mass(k);
-  if (s.target == "sphere") {
-    m_star = 0.5 * m;
-    r_star = 0.5 * k.radius;
-    e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, k.particle.young, k.particle.poisson);
-    v = 2 * k.speed;
-  } else {
-    m_star = m;
-    r_star = k.radius;
-    e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, k.wall.young, k.wall.poisson);
-    v = k.speed;
-  }
-}
-
 // One impact of the scene in the scene's precision (the kernels' type; the measures are double).
 dm::ImpactMeasure impact(const pm::io::DemScene& s, double angle_deg, double restitution) {
   const auto c = pm::io::dem_impact_config(s, angle_deg, restitution);
@@ -53,26 +36,23 @@ void run_scene(const pm::io::DemScene& s, const std::filesystem::path& out_dir, 
   if (s.test == 1 || s.test == 2) {
     const auto got = impact(s, 0.0, s.restitutions[0]);
     total_steps += got.steps;
-    double m_star, r_star, e_star, v;
-    hertz_of(s, m_star, r_star, e_star, v);
-    const double f = dm::hertz_max_force(m_star, r_star, e_star, v);
-    const double d = dm::hertz_max_overlap(m_star, r_star, e_star, v);
-    const double t = dm::hertz_contact_time(m_star, r_star, e_star, v);
+    const auto h = dm::hertz_impact(s.impact, s.target == "sphere");  // models/dem/benchmark.hpp
+    const auto e = dm::hertz_errors(got, h);
     j[prefix + "max_force"] = got.max_force;
     j[prefix + "contact_time"] = got.contact_time;
     j[prefix + "max_overlap"] = got.max_overlap;
     j[prefix + "restitution"] = got.normal_restitution;
-    j[prefix + "hertz_max_force"] = f;
-    j[prefix + "hertz_contact_time"] = t;
-    j[prefix + "hertz_max_overlap"] = d;
-    j[prefix + "max_force_error"] = got.max_force / f - 1;
-    j[prefix + "contact_time_error"] = got.contact_time / t - 1;
-    j[prefix + "max_overlap_error"] = got.max_overlap / d - 1;
+    j[prefix + "hertz_max_force"] = h.max_force;
+    j[prefix + "hertz_contact_time"] = h.contact_time;
+    j[prefix + "hertz_max_overlap"] = h.max_overlap;
+    j[prefix + "max_force_error"] = e.max_force;
+    j[prefix + "contact_time_error"] = e.contact_time;
+    j[prefix + "max_overlap_error"] = e.max_overlap;
     j[prefix + "dt"] = pm::io::dem_impact_config(s, 0.0, s.restitutions[0]).dt;
     if (!quiet)
       std::printf("%s: F_max %.6g N (Hertz %.6g, %+.3f %%), delta_max %.6g m (%+.3f %%), t_c %.6g s (Hertz %.6g, %+.3f %%)\n",
-                  s.header.file.filename().c_str(), got.max_force, f, 100 * (got.max_force / f - 1), got.max_overlap,
-                  100 * (got.max_overlap / d - 1), got.contact_time, t, 100 * (got.contact_time / t - 1));
+                  s.header.file.filename().c_str(), got.max_force, h.max_force, 100 * e.max_force, got.max_overlap,
+                  100 * e.max_overlap, got.contact_time, h.contact_time, 100 * e.contact_time);
   } else if (s.test == 3) {
     nlohmann::json rows = nlohmann::json::array();
     for (double e : s.restitutions) {
@@ -84,30 +64,20 @@ void run_scene(const pm::io::DemScene& s, const std::filesystem::path& out_dir, 
     j["test3_restitution"] = rows;
   } else if (s.test == 4) {
     nlohmann::json rows = nlohmann::json::array(), centre_rows = nlohmann::json::array();
-    std::vector<std::vector<double>> columns(6);
+    dm::ReboundTable table;  // models/dem/benchmark.hpp
     for (double angle : s.angles) {
       const auto got = impact(s, angle, s.restitutions[0]);
       total_steps += got.steps;
-      const double rebound = dm::rebound_angle_deg(got, s.impact.radius);
-      const double centre = dm::centre_rebound_angle_deg(got);
-      rows.push_back({angle, rebound});
-      centre_rows.push_back({angle, centre});
-      columns[0].push_back(angle);
-      columns[1].push_back(rebound);
-      columns[2].push_back(centre);
-      columns[3].push_back(got.v_after[0]);
-      columns[4].push_back(got.v_after[2]);
-      columns[5].push_back(got.omega_after[1]);
+      table.add(angle, got, s.impact.radius);
+      rows.push_back({angle, table.contact_point.back()});
+      centre_rows.push_back({angle, table.centre.back()});
       if (!quiet)
         std::printf("test 4: incidence %4.1f deg -> rebound %7.3f deg (contact point), %7.3f deg (centre)\n", angle,
-                    rebound, centre);
+                    table.contact_point.back(), table.centre.back());
     }
     j["test4_rebound_angles"] = rows;
     j["test4_centre_rebound_angles"] = centre_rows;
-    pm::io::write_csv(out_dir / "test4.csv",
-                      {"incidence_deg", "rebound_contact_point_deg", "rebound_centre_deg", "vx_after", "vz_after",
-                       "spin_y_after"},
-                      columns);
+    pm::io::write_csv(out_dir / "test4.csv", dm::ReboundTable::header(), table.columns());
     wrote_test4 = true;
   }
 }

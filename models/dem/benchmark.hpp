@@ -3,12 +3,15 @@
 //
 // The measures: the largest contact force (|m (a - g)| of the first sphere after each step), the
 // largest overlap, the contact time (overlap > 0, its start and end interpolated linearly between
-// steps), the velocities and spins after the contact, and the rebound angle of the contact point.
+// steps), the velocities and spins after the contact, and the rebound angle of the contact point; and
+// what the benchmark compares them with (Hertz theory) or tabulates (the rebound angles of test 4).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "dem/dem.hpp"
 #include "dem/impacts.hpp"
@@ -72,6 +75,41 @@ ImpactMeasure run_impact(const Config& c, double wall_z = 0.0, std::int64_t max_
   return out;
 }
 
+// Hertz theory of a Chung & Ooi impact (tests 1-2): two identical spheres head on, each at k.speed
+// (m* = m / 2, R* = r / 2, E* of the two spheres, approach speed 2 v), or a sphere onto a wall (m, r,
+// E* of the sphere and the wall, v); the largest force, the largest overlap and the contact time.
+struct HertzImpact {
+  double m_star = 0, r_star = 0, e_star = 0, speed = 0;
+  double max_force = 0, max_overlap = 0, contact_time = 0;
+};
+inline HertzImpact hertz_impact(const Case& k, bool two_spheres) {
+  HertzImpact h;
+  const double m = sphere_mass(k);
+  if (two_spheres) {
+    h.m_star = 0.5 * m;
+    h.r_star = 0.5 * k.radius;
+    h.e_star = effective_modulus(k.particle.young, k.particle.poisson, k.particle.young, k.particle.poisson);
+    h.speed = 2 * k.speed;
+  } else {
+    h.m_star = m;
+    h.r_star = k.radius;
+    h.e_star = effective_modulus(k.particle.young, k.particle.poisson, k.wall.young, k.wall.poisson);
+    h.speed = k.speed;
+  }
+  h.max_force = hertz_max_force(h.m_star, h.r_star, h.e_star, h.speed);
+  h.max_overlap = hertz_max_overlap(h.m_star, h.r_star, h.e_star, h.speed);
+  h.contact_time = hertz_contact_time(h.m_star, h.r_star, h.e_star, h.speed);
+  return h;
+}
+
+// A measured impact against Hertz theory: the relative errors measured / Hertz - 1.
+struct HertzErrors {
+  double max_force = 0, max_overlap = 0, contact_time = 0;
+};
+inline HertzErrors hertz_errors(const ImpactMeasure& got, const HertzImpact& h) {
+  return {got.max_force / h.max_force - 1, got.max_overlap / h.max_overlap - 1, got.contact_time / h.contact_time - 1};
+}
+
 // Rebound angle (degrees) of the contact point of a sphere leaving a plane z = const: atan of its
 // tangential (x) over its normal (z) velocity, v_c = v + omega x (-r e_z).
 inline double rebound_angle_deg(const ImpactMeasure& m, double radius) {
@@ -84,5 +122,23 @@ inline double rebound_angle_deg(const ImpactMeasure& m, double radius) {
 inline double centre_rebound_angle_deg(const ImpactMeasure& m) {
   return std::atan2(m.v_after[0], m.v_after[2]) * 180.0 / kPi;
 }
+
+// Oblique impacts (test 4), one row per incidence angle: both rebound angles, the velocity (x, z) and
+// the spin (y) after the impact; the columns of test4.csv.
+struct ReboundTable {
+  std::vector<double> incidence, contact_point, centre, vx, vz, spin;
+  void add(double incidence_deg, const ImpactMeasure& got, double radius) {
+    incidence.push_back(incidence_deg);
+    contact_point.push_back(rebound_angle_deg(got, radius));
+    centre.push_back(centre_rebound_angle_deg(got));
+    vx.push_back(got.v_after[0]);
+    vz.push_back(got.v_after[2]);
+    spin.push_back(got.omega_after[1]);
+  }
+  static std::vector<std::string> header() {
+    return {"incidence_deg", "rebound_contact_point_deg", "rebound_centre_deg", "vx_after", "vz_after", "spin_y_after"};
+  }
+  std::vector<std::vector<double>> columns() const { return {incidence, contact_point, centre, vx, vz, spin}; }
+};
 
 }  // namespace polymech::dem

@@ -20,19 +20,11 @@ namespace dm = polymech::dem;
 
 namespace {
 
-// Hertz theory of a case: (F_max, delta_max, t_c) at approach speed v with m*, R*, E*.
-struct Hertz {
-  double force, overlap, time;
-};
-Hertz hertz(double m_star, double r_star, double e_star, double v) {
-  return {dm::hertz_max_force(m_star, r_star, e_star, v), dm::hertz_max_overlap(m_star, r_star, e_star, v),
-          dm::hertz_contact_time(m_star, r_star, e_star, v)};
-}
-
-void expect_hertz(const dm::ImpactMeasure& got, const Hertz& h) {
-  EXPECT_NEAR(got.max_force / h.force, 1.0, 0.02) << got.max_force << " vs " << h.force;
-  EXPECT_NEAR(got.max_overlap / h.overlap, 1.0, 0.02) << got.max_overlap << " vs " << h.overlap;
-  EXPECT_NEAR(got.contact_time / h.time, 1.0, 0.02) << got.contact_time << " vs " << h.time;
+// Hertz theory of the impact (dm::hertz_impact, models/dem/benchmark.hpp), within 2 %.
+void expect_hertz(const dm::ImpactMeasure& got, const dm::HertzImpact& h) {
+  EXPECT_NEAR(got.max_force / h.max_force, 1.0, 0.02) << got.max_force << " vs " << h.max_force;
+  EXPECT_NEAR(got.max_overlap / h.max_overlap, 1.0, 0.02) << got.max_overlap << " vs " << h.max_overlap;
+  EXPECT_NEAR(got.contact_time / h.contact_time, 1.0, 0.02) << got.contact_time << " vs " << h.contact_time;
 }
 
 // The restitution the damped Hertz law gives, by RK4 on m x'' = -(4/3 E* sqrt(R) x^1.5 + c sqrt(S_n m) x')
@@ -64,17 +56,14 @@ double damped_hertz_restitution(double m, double r, double e_star, double beta, 
 TEST(ChungOoi, Test1TwoIdenticalSpheresMatchHertz) {
   const auto k = dm::chung_ooi_test1_glass();
   const auto got = dm::run_impact(dm::two_spheres(k, 400));
-  const double m = dm::sphere_mass(k);
-  const double e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, k.particle.young, k.particle.poisson);
-  expect_hertz(got, hertz(0.5 * m, 0.5 * k.radius, e_star, 2 * k.speed));
+  expect_hertz(got, dm::hertz_impact(k, true));
   EXPECT_NEAR(got.normal_restitution, 1.0, 1e-3);  // elastic
 }
 
 TEST(ChungOoi, Test2SphereOnRigidPlaneMatchesHertz) {
   for (const auto& k : {dm::chung_ooi_test2_aluminium(), dm::chung_ooi_test2_magnesium()}) {
     const auto got = dm::run_impact(dm::sphere_on_wall(k, 400));
-    const double e_star = dm::effective_modulus(k.particle.young, k.particle.poisson, 0.0, 0.0);
-    expect_hertz(got, hertz(dm::sphere_mass(k), k.radius, e_star, k.speed));
+    expect_hertz(got, dm::hertz_impact(k, false));  // the rigid wall: k.wall.young = 0
     EXPECT_NEAR(got.normal_restitution, 1.0, 1e-3);
   }
 }
