@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -118,6 +119,19 @@ inline nlohmann::json summary_header(const std::string& name, const io::SceneHea
   j["command"] = invocation();
   j["threads"] = kx::concurrency<ExecSpace>();  // per MPI rank where there are ranks
   return j;
+}
+
+// [[x, y], ...]: a summary's list of pairs (built by hand: GCC 12 sees a null dereference in nlohmann's
+// conversion of std::array), from pairs or from two columns of one length.
+inline nlohmann::json json_pairs(const std::vector<std::array<double, 2>>& v) {
+  auto a = nlohmann::json::array();
+  for (const auto& p : v) a.push_back({p[0], p[1]});
+  return a;
+}
+inline nlohmann::json json_pairs(const std::vector<double>& x, const std::vector<double>& y) {
+  auto a = nlohmann::json::array();
+  for (std::size_t k = 0; k < x.size() && k < y.size(); ++k) a.push_back({x[k], y[k]});
+  return a;
 }
 
 // "1 thread", "2 threads": the thread count of this run, for the apps' first lines (issue 33 item 10).

@@ -63,20 +63,17 @@ void run_scene(const pm::io::DemScene& s, const std::filesystem::path& out_dir, 
     }
     j["test3_restitution"] = rows;
   } else if (s.test == 4) {
-    nlohmann::json rows = nlohmann::json::array(), centre_rows = nlohmann::json::array();
     dm::ReboundTable table;  // models/dem/benchmark.hpp
     for (double angle : s.angles) {
       const auto got = impact(s, angle, s.restitutions[0]);
       total_steps += got.steps;
       table.add(angle, got, s.impact.radius);
-      rows.push_back({angle, table.contact_point.back()});
-      centre_rows.push_back({angle, table.centre.back()});
       if (!quiet)
         std::printf("test 4: incidence %4.1f deg -> rebound %7.3f deg (contact point), %7.3f deg (centre)\n", angle,
                     table.contact_point.back(), table.centre.back());
     }
-    j["test4_rebound_angles"] = rows;
-    j["test4_centre_rebound_angles"] = centre_rows;
+    j["test4_rebound_angles"] = pm::apps::json_pairs(table.incidence, table.contact_point);
+    j["test4_centre_rebound_angles"] = pm::apps::json_pairs(table.incidence, table.centre);
     pm::io::write_csv(out_dir / "test4.csv", dm::ReboundTable::header(), table.columns());
     wrote_test4 = true;
   }

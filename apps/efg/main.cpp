@@ -10,7 +10,6 @@
 // the displacement at the nodes. Dynamic: summary.json (sif_stationary or sif_running, crack_opening,
 // sif_peak, energy_error, run record) and sif_history.csv; checkpoints and --restart as in
 // apps/common/restart.hpp.
-#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -24,13 +23,6 @@
 namespace pm = polymech;
 
 namespace {
-
-// [[x, y], ...] (built by hand: GCC 12 sees a null dereference in nlohmann's conversion of std::array)
-nlohmann::json pairs(const std::vector<std::array<double, 2>>& v) {
-  auto a = nlohmann::json::array();
-  for (const auto& p : v) a.push_back({p[0], p[1]});
-  return a;
-}
 
 // The stationary or running crack under a Heaviside step (seed 004 §3.2, §3.3) through the case runner
 // (apps/common/case.hpp: checkpoints, --restart, watchdog): Newmark steps, J' on every path and the crack
@@ -47,20 +39,17 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
   model.start_dynamic(scene.dt);
   model.set_prescribed_growth(true);
   pm::apps::Series series(pm::efg::history_columns(c.j_radii));  // models/efg/analysis.hpp
-  double j_seconds = 0.0;
+  pm::efg::DynamicRecord<pm::efg::Efg<T>> rec(model, scene.domain_cells);
   cs.records.keep("efg/series", series);
-  cs.records.keep("efg/j_seconds", j_seconds);
+  cs.records.keep("efg/j_seconds", rec.j_seconds);
   cs.hooks.sample_every = scene.output_every;
   cs.hooks.sample_at_start = true;
   cs.hooks.sample = [&](std::int64_t) {
-    const auto tj = std::chrono::steady_clock::now();
-    const auto s = pm::efg::dynamic_sample(model, scene.domain_cells);
-    j_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tj).count();
-    const double t_us = model.time() * 1e6;
-    series.append(pm::efg::history_row(t_us, s, model.load_work()));
+    pm::efg::DynamicSample s;
+    series.append(rec.sample(s));
     if (!opt.quiet)
-      std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", t_us, 1e3 * model.crack_length(),
-                  s.mean, 100 * s.spread, s.opening);
+      std::printf("t = %7.3f us: a = %.4g mm, K/(s sqrt(pi a0)) = %.4f (J' spread %.2f %%), COD = %.4e m\n", model.time() * 1e6,
+                  1e3 * model.crack_length(), s.mean, 100 * s.spread, s.opening);
   };
   const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
 
@@ -78,8 +67,8 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
   }
   j["dt"] = scene.dt;
   j["steps"] = stats.steps;
-  j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = pairs(h.sif);
-  j["crack_opening"] = pairs(h.opening);
+  j[c.growth_speed > 0 ? "sif_running" : "sif_stationary"] = pm::apps::json_pairs(h.sif);
+  j["crack_opening"] = pm::apps::json_pairs(h.opening);
   j["sif_peak"] = h.peak;
   j["sif_peak_time_us"] = h.peak_time_us;
   j["j_path_spread"] = h.peak_spread;
@@ -91,7 +80,7 @@ int run_dynamic(const pm::io::EfgScene& scene, pm::efg::Efg<T>& model, const pm:
   j["factor_seconds"] = t.factor_seconds;
   const auto done = stats.steps - cs.resume_step();
   j["step_seconds_per_step"] = done > 0 ? t.step_seconds / static_cast<double>(done) : 0.0;
-  j["j_seconds"] = j_seconds;
+  j["j_seconds"] = rec.j_seconds;
   j["wall_seconds"] = stats.wall_seconds;
   series.write_csv(cs.out() / "sif_history.csv", pm::efg::history_csv_columns(series.names()));
   const int rc = cs.finish(j, stats, {"summary.json", "sif_history.csv"});
@@ -129,11 +118,11 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
   j["nodes"] = model.nodes();
   j["gauss_points"] = model.layout().quad_count();
   j["crack"] = c.crack == pm::efg::CrackKind::edge ? "edge" : "centre";
-  j["a_over_w"] = c.crack == pm::efg::CrackKind::edge ? c.crack_length / c.width : c.crack_length / (0.5 * c.width);
+  j["a_over_w"] = pm::efg::a_over_w(c);
   j["handbook_factor"] = scene.handbook;
-  j["sif_static"] = pairs(sif.paths());
+  j["sif_static"] = pm::apps::json_pairs(sif.paths());
   j["sif_mean"] = sif.mean;
-  j["sif_error"] = sif.mean / scene.handbook - 1;
+  j["sif_error"] = sif.mean_error;
   j["sif_max_abs_error"] = sif.max_abs_error();
   j["j_path_spread"] = sif.spread;
   j["crack_opening"] = model.opening_at(0.0);  // at the crack's centre (centre crack) or mouth (edge crack)
@@ -144,11 +133,10 @@ int run_case(const pm::io::EfgScene& scene, const pm::apps::CommonOptions& opt, 
   j["shape_function_values"] = t.entries;
   j["shape_function_evaluations_per_second"] = t.evaluations / t.shape_seconds;
   j["wall_seconds"] = wall;
-  pm::io::write_csv(cs.out() / "j_paths.csv", {"radius_m", "J_N_per_m", "K_Pa_sqrt_m", "K_factor", "handbook_factor_error"},
-                    pm::io::Columns{sif.radii, sif.j, sif.k, sif.factor, sif.error});
+  pm::io::write_csv(cs.out() / "j_paths.csv", pm::efg::StaticSif::header(), sif.columns());
   cs.finish(j, {"summary.json", "j_paths.csv", "fields.h5", "fields.xdmf"});
   std::printf("efg: %d nodes, K/(s sqrt(pi a)) = %.5f (handbook %.5f, %+.2f %%), J path spread %.2f %%, %.2f s; results in %s\n",
-              model.nodes(), sif.mean, scene.handbook, 100 * (sif.mean / scene.handbook - 1), 100 * sif.spread, wall, cs.out().c_str());
+              model.nodes(), sif.mean, scene.handbook, 100 * sif.mean_error, 100 * sif.spread, wall, cs.out().c_str());
   return 0;
 }
 

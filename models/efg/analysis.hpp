@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -23,6 +24,7 @@ namespace polymech::efg {
 struct StaticSif {
   std::vector<double> radii, j, k, factor, error;  // per path; error: factor / handbook - 1
   double mean = 0.0;                               // mean factor over the paths
+  double mean_error = 0.0;                         // mean / handbook - 1
   double spread = 0.0;                             // (J_max - J_min) / J_max over the paths
   double max_abs_error() const {
     return std::abs(*std::max_element(error.begin(), error.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
@@ -33,6 +35,9 @@ struct StaticSif {
     for (std::size_t i = 0; i < radii.size(); ++i) p.push_back({radii[i], factor[i]});
     return p;
   }
+  // j_paths.csv: a row per path
+  static std::vector<std::string> header() { return {"radius_m", "J_N_per_m", "K_Pa_sqrt_m", "K_factor", "handbook_factor_error"}; }
+  std::vector<std::vector<double>> columns() const { return {radii, j, k, factor, error}; }
 };
 template <class Model>
 StaticSif static_sif(const Model& model, double handbook) {
@@ -50,8 +55,15 @@ StaticSif static_sif(const Model& model, double handbook) {
   }
   for (double f : s.factor) s.mean += f;
   s.mean /= static_cast<double>(s.factor.size());
+  s.mean_error = s.mean / handbook - 1;
   s.spread = (hi - lo) / hi;
   return s;
+}
+
+// The crack's length over the plate's width (edge crack) or half-width (centre crack): the handbook's
+// a / w.
+inline double a_over_w(const Config& c) {
+  return c.crack == CrackKind::edge ? c.crack_length / c.width : c.crack_length / (0.5 * c.width);
 }
 
 // One sample of a dynamic run: J' on every path (seed 004 eq. (13)) and the crack opening at the centre.
@@ -102,6 +114,23 @@ inline std::vector<double> history_row(double t_us, const DynamicSample& s, doub
   row.insert(row.end(), s.factor.begin(), s.factor.end());
   return row;
 }
+
+// The samples of a dynamic run: each one's row of the history (history_row) and the time spent on
+// the J-integrals (a timing of the summary; in the run's checkpoints).
+template <class Model>
+struct DynamicRecord {
+  DynamicRecord(Model& model, int domain_cells) : m(model), cells(domain_cells) {}
+  // One sample now (dynamic_sample) and its row.
+  std::vector<double> sample(DynamicSample& s) {
+    const auto t0 = std::chrono::steady_clock::now();
+    s = dynamic_sample(m, cells);
+    j_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return history_row(m.time() * 1e6, s, m.load_work());
+  }
+  Model& m;
+  int cells = 0;
+  double j_seconds = 0.0;
+};
 
 // What the summary reads off the history (columns as history_columns): the mean factor and the crack
 // opening over time [t_us, value], the factor's peak (its time, its J' spread), and the energy error:
