@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   std::string method = "iqn_ils";
   double tol = 1e-8, chi = 1.0;
   int arc = 1;
-  std::string test = "fsi1", csv;
+  std::string test = "fsi1", csv, motion = "incremental";
   double dt = 0.005, end = 1.0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -43,9 +43,10 @@ int main(int argc, char** argv) {
     else if (k == "--dt") dt = std::atof(v.c_str());
     else if (k == "--end") end = std::atof(v.c_str());
     else if (k == "--csv") csv = v;
+    else if (k == "--mesh-motion") motion = v;
     else {
       std::fprintf(stderr, "sweep_turek_hron_fsi: unknown option '%s' (allowed: --levels L0,L1,.., --method relaxation|aitken|iqn_ils, "
-                           "--tol T, --chi X, --arc-root 0|1, --test fsi1|fsi2|fsi3, --dt DT, --end T, --csv FILE)\n", argv[i]);
+                           "--tol T, --chi X, --arc-root 0|1, --test fsi1|fsi2|fsi3, --dt DT, --end T, --csv FILE, --mesh-motion incremental|total)\n", argv[i]);
       return 2;
     }
   }
@@ -62,8 +63,8 @@ int main(int argc, char** argv) {
   const fs::TurekHronFsiReference ref = fs::turek_hron_fsi1_reference();
   Kokkos::ScopeGuard kokkos(argc, argv);
   if (test != "fsi1") {
-    if ((test != "fsi2" && test != "fsi3") || !(dt > 0) || !(end > 0) || levels.empty()) {
-      std::fprintf(stderr, "sweep_turek_hron_fsi: --test fsi2|fsi3 needs --dt > 0, --end > 0 and a level\n");
+    if ((test != "fsi2" && test != "fsi3") || !(dt > 0) || !(end > 0) || levels.empty() || (motion != "incremental" && motion != "total")) {
+      std::fprintf(stderr, "sweep_turek_hron_fsi: --test fsi2|fsi3 needs --dt > 0, --end > 0, a level and --mesh-motion incremental|total\n");
       return 2;
     }
     fs::TurekHronFsiRunConfig rc;
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
     rc.level = levels.front();
     rc.dt = dt;
     rc.end_time = end;
+    rc.incremental_mesh = motion == "incremental";
     rc.coupling.method = co.method;
     std::FILE* f = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
     if (!csv.empty() && !f) {
@@ -97,9 +99,9 @@ int main(int argc, char** argv) {
       evals += r.evaluations;
       max_evals = std::max(max_evals, r.evaluations);
     }
-    std::printf("# %s level %d dt %g to t = %g (%s): %zu steps, %ld evaluations (mean %.2f, max %d), fluid Newton %d, solid Newton %d; "
+    std::printf("# %s level %d dt %g to t = %g (%s, %s mesh motion): %zu steps, %ld evaluations (mean %.2f, max %d), fluid Newton %d, solid Newton %d; "
                 "CPU s: total %.1f, mesh %.1f, fluid %.1f, solid %.1f\n",
-                test.c_str(), rc.level, dt, end, method.c_str(), rows.size(), evals, static_cast<double>(evals) / rows.size(), max_evals,
+                test.c_str(), rc.level, dt, end, method.c_str(), motion.c_str(), rows.size(), evals, static_cast<double>(evals) / rows.size(), max_evals,
                 tm.fluid_newton, tm.solid_newton, total, tm.mesh, tm.fluid, tm.solid);
     double t0 = 0.0, t1 = 0.0;
     if (polymech::flow::last_period(t, uy, t0, t1)) {
