@@ -21,20 +21,13 @@ namespace me = polymech::mps_elastic;
 
 namespace {
 
-// Before the run (also for --dry-run): the scene must be a crack scene with a harmonics probe whose
-// analysis window the record holds, or the run's time is spent for nothing (issue 33 item 3); probes
-// whose own window does not fit are named (models/mps_elastic/analysis.hpp).
+// Before the run (also for --dry-run): the scene must be a harmonics case whose record holds the
+// analysis window, and the probes whose own window does not fit are named (models/mps_elastic/analysis.hpp).
 void check_scene(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions& opt) {
-  const me::Config& c = scene.config;
-  if (c.crack.mode == me::CrackMode::none) throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs a [crack] table");
-  if (scene.harmonics_probe.empty())
-    throw pm::io::SceneError(opt.scene.string() + ": mps_harmonics needs [analysis].harmonics_probe");
-  const auto why = me::record_shortfall(c, scene.harmonics_probe, opt.steps > 0 ? "--steps" : "[time].steps at this accuracy");
+  const auto why = me::harmonics_case_error(scene.config, scene.harmonics_probe, opt.steps > 0 ? "--steps" : "[time].steps at this accuracy");
   if (!why.empty()) throw pm::io::SceneError(opt.scene.string() + ": " + why);
-  for (const auto& p : c.probes)
-    if (p.name != scene.harmonics_probe && c.steps < me::steps_for_harmonic_window(c, p.name) && !opt.quiet)
-      std::fprintf(stderr, "mps_harmonics: note: %s: the ratios at probe %s are left out (%lld steps needed)\n",
-                   me::window_description(c, p.name).c_str(), p.name.c_str(), static_cast<long long>(me::steps_for_harmonic_window(c, p.name)));
+  for (const auto& note : me::probes_left_out(scene.config, scene.harmonics_probe))
+    if (!opt.quiet) std::fprintf(stderr, "mps_harmonics: note: %s\n", note.c_str());
 }
 
 template <class T>
@@ -87,17 +80,13 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   const bool analysed = res.analysis_error.empty();
 
   const std::string comp = scene.harmonics_component;
-  pm::io::write_csv(cs.out() / "time_history.csv", {"time", comp + "_crack", comp + "_intact"},
-                    pm::io::Columns{b.times, b.signal, a.signal});
-  if (analysed) pm::io::write_csv(cs.out() / "spectrum.csv", {"frequency", "crack", "intact"}, me::relative_spectra(res));
-  for (const auto& [run, name] : {std::pair{&a, "probes_intact.csv"}, std::pair{&b, "probes_crack.csv"}}) {  // u1, u3 at every probe
-    const auto t = me::probe_table(run->history);
-    pm::io::write_csv(cs.out() / name, t.header, t.columns);
+  std::vector<std::string> files = {"summary.json"};
+  for (const auto& t : me::harmonics_tables(res, comp)) {  // models/mps_elastic/analysis.hpp
+    pm::io::write_csv(cs.out() / t.file, t.table.header, t.table.columns);
+    files.push_back(t.file);
   }
-  if (!b.contact.times.empty())
-    pm::io::write_csv(cs.out() / "contact_states.csv", {"time", "separation", "stick", "slip"},
-                      pm::io::Columns{b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip});
   const auto xdmf = scene.snapshot_every > 0 ? cs.snapshots().finish().filename().string() : std::string();
+  if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
 
   nlohmann::json j = cs.summary();
   j["spacing"] = c.spacing;
@@ -134,10 +123,6 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   j["restarts"] = a.stats.restarts + b.stats.restarts;
   pm::apps::put_subnormal_census(j, a.stats, "subnormal_census_intact");
   pm::apps::put_subnormal_census(j, b.stats, "subnormal_census_crack");
-  std::vector<std::string> files = {"summary.json", "time_history.csv", "probes_crack.csv", "probes_intact.csv"};
-  if (analysed) files.push_back("spectrum.csv");
-  if (!b.contact.times.empty()) files.push_back("contact_states.csv");
-  if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
   cs.finish(j, files);
 
   if (!analysed) {

@@ -4,7 +4,7 @@
 //   - before a run: whether the record holds the analysis window at a probe (the burst's arrival plus
 //     four periods), and the reason in words when it does not;
 //   - the spectra of both runs at the harmonics probe over the first harmonic (Figs. 8, 10);
-//   - every probe's u1 and u3 over time, both runs;
+//   - every probe's u1 and u3 over time, both runs (with the spectra: the tables the case writes);
 //   - the harmonic ratios A_n / A_1 at every probe, each in its own steady window (how the harmonics
 //     fade with the distance from the crack).
 // Host code; spectra need polymech_analysis (FFTW).
@@ -43,6 +43,29 @@ inline std::string record_shortfall(const Config& c, const std::string& probe, c
   return steps_from + " = " + std::to_string(c.steps) + " records " + models::format_g(static_cast<double>(c.steps) * c.dt) +
          " s, but " + window_description(c, probe) + ": needs at least " + std::to_string(n) + " steps (--steps " +
          std::to_string(n) + ")";
+}
+
+// Why a scene cannot run as a harmonics case ("" when it can): it needs a crack, a harmonics probe, and a
+// record that holds that probe's analysis window (record_shortfall), or the run's time is spent for
+// nothing (issue 33 item 3).
+inline std::string harmonics_case_error(const Config& c, const std::string& probe, const std::string& steps_from) {
+  if (c.crack.mode == CrackMode::none) return "mps_harmonics needs a [crack] table";
+  if (probe.empty()) return "mps_harmonics needs [analysis].harmonics_probe";
+  return record_shortfall(c, probe, steps_from);
+}
+
+// The other probes whose own window the record does not hold: their ratios are left out (a note each,
+// "<window_description>: the ratios at probe <name> are left out (<n> steps needed)").
+inline std::vector<std::string> probes_left_out(const Config& c, const std::string& harmonics_probe) {
+  std::vector<std::string> notes;
+  for (const auto& p : c.probes) {
+    if (p.name == harmonics_probe) continue;
+    const std::int64_t n = steps_for_harmonic_window(c, p.name);
+    if (c.steps < n)
+      notes.push_back(window_description(c, p.name) + ": the ratios at probe " + p.name + " are left out (" + std::to_string(n) +
+                      " steps needed)");
+  }
+  return notes;
 }
 
 // The lattice's reference positions (x1, x3 per particle): the mesh of the snapshots.
@@ -86,6 +109,28 @@ inline ProbeTable probe_table(const ProbeHistory& h) {
       t.columns.push_back(h.values[p][f]);
     }
   return t;
+}
+
+// The tables a harmonics case writes, in the order of its summary's list of files: time_history.csv
+// (`component` at the harmonics probe, both runs), probes_crack.csv and probes_intact.csv (probe_table),
+// spectrum.csv (relative_spectra; not when the analysis failed) and contact_states.csv (the crack's pairs
+// in each state over time; when the cracked run recorded them).
+struct NamedTable {
+  std::string file;
+  ProbeTable table;
+};
+inline std::vector<NamedTable> harmonics_tables(const HarmonicsResult& r, const std::string& component) {
+  const auto& a = r.intact;
+  const auto& b = r.crack;
+  std::vector<NamedTable> out;
+  out.push_back({"time_history.csv", {{"time", component + "_crack", component + "_intact"}, {b.times, b.signal, a.signal}}});
+  out.push_back({"probes_crack.csv", probe_table(b.history)});
+  out.push_back({"probes_intact.csv", probe_table(a.history)});
+  if (r.analysis_error.empty()) out.push_back({"spectrum.csv", {{"frequency", "crack", "intact"}, relative_spectra(r)}});
+  if (!b.contact.times.empty())
+    out.push_back({"contact_states.csv",
+                   {{"time", "separation", "stick", "slip"}, {b.contact.times, b.contact.separation, b.contact.stick, b.contact.slip}}});
+  return out;
 }
 
 // The harmonic ratios of `field` at every probe, both runs, in the probe's own steady window (found in
