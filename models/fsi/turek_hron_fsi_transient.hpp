@@ -3,9 +3,9 @@
 // elastic mesh motion) with a coupled time loop.
 //   FSI2: rho_s = 10 rho_f = 1e4, mu_s = 0.5e6, nu_s = 0.4, Ubar = 1 (Re 100);
 //   FSI3: rho_s = rho_f = 1e3, mu_s = 2e6, nu_s = 0.4, Ubar = 2 (Re 200);
-// the inflow ramped by (1 - cos(pi t / 2)) / 2 for t < 2 s. Reference (Table 12/13, the finest grids):
-// FSI2 uy(A) = 1.48e-3 +- 8.06e-2 (freq 2.0), drag 208.83 +- 73.75; FSI3 uy(A) = 1.48e-3 +- 3.44e-2 (freq 5.3),
-// drag 457.3 +- 22.66.
+// the inflow ramped by (1 - cos(pi t / 2)) / 2 for t < 2 s. Reference (Turek & Hron 2006, Table 13, the finest
+// grids; issue 36 quotes an FSI2 uy amplitude of 0.0830): FSI2 uy(A) = 1.23e-3 +- 8.06e-2 (freq 2.0), drag
+// 208.83 +- 73.75; FSI3 uy(A) = 1.48e-3 +- 3.44e-2 (freq 5.3), drag 457.3 +- 22.66 (mean +- amplitude).
 //
 // One time step t_n -> t_n+1 = t_n + dt, partitioned Dirichlet-Neumann, strongly coupled (iterated to the
 // coupling tolerance in every step):
