@@ -192,17 +192,7 @@ class TurekHronFsi {
     if (!rep.converged)
       throw std::runtime_error("turek-hron fsi: the fluid's Newton iteration did not converge (" + std::to_string(rep.iterations) +
                                " iterations, |r| " + std::to_string(rep.residual) + ")");
-    const std::vector<double>& r = fluid_->residual();
-    std::vector<double> f(static_cast<std::size_t>(solid_->dof_count()), 0.0);
-    flag_force_[0] = flag_force_[1] = 0.0;
-    for (std::size_t k = 0; k < solid_wet_.size(); ++k)
-      for (int c = 0; c < 2; ++c) {
-        const double fk = -r[static_cast<std::size_t>(2 * fluid_wet_[k] + c)];
-        f[static_cast<std::size_t>(2 * solid_wet_[k] + c)] = fk;
-        flag_force_[c] += fk;
-      }
-    last_loads_ = f;
-    return f;
+    return wet_loads();
   }
 
   // The solid under the nodal forces f; returns the wet nodes' displacement.
@@ -260,6 +250,22 @@ class TurekHronFsi {
   }
 
  protected:  // (the unsteady driver, models/fsi/turek_hron_fsi_transient.hpp, builds on the same set-up)
+  // The wet nodes' reaction forces of the fluid's last solve (f_a = -R_a, the consistent nodal force of the
+  // traction) on the solid's DoF vector; their sum is the fluid's force on the flag.
+  std::vector<double> wet_loads() {
+    const std::vector<double>& r = fluid_->residual();
+    std::vector<double> f(static_cast<std::size_t>(solid_->dof_count()), 0.0);
+    flag_force_[0] = flag_force_[1] = 0.0;
+    for (std::size_t k = 0; k < solid_wet_.size(); ++k)
+      for (int c = 0; c < 2; ++c) {
+        const double fk = -r[static_cast<std::size_t>(2 * fluid_wet_[k] + c)];
+        f[static_cast<std::size_t>(2 * solid_wet_[k] + c)] = fk;
+        flag_force_[c] += fk;
+      }
+    last_loads_ = f;
+    return f;
+  }
+
   static double seconds(std::clock_t c0) { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; }
 
   TurekHronFsiCase case_;

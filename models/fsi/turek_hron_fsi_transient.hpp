@@ -187,20 +187,6 @@ class TurekHronFsiTransient : public TurekHronFsi {
   }
 
  private:
-  // The wet nodes' reaction forces of the fluid's last solve on the solid's DoF vector.
-  std::vector<double> wet_loads() {
-    const std::vector<double>& r = fluid_->residual();
-    std::vector<double> f(static_cast<std::size_t>(solid_->dof_count()), 0.0);
-    flag_force_[0] = flag_force_[1] = 0.0;
-    for (std::size_t k = 0; k < solid_wet_.size(); ++k)
-      for (int c = 0; c < 2; ++c) {
-        const double fk = -r[static_cast<std::size_t>(2 * fluid_wet_[k] + c)];
-        f[static_cast<std::size_t>(2 * solid_wet_[k] + c)] = fk;
-        flag_force_[c] += fk;
-      }
-    last_loads_ = f;
-    return f;
-  }
 
   double dt_, beta_, gamma_;
   bool incremental_;
