@@ -4,6 +4,7 @@
 // period printed. CPU time of the solve (one thread: OMP_NUM_THREADS=1).
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_turek_hron_cfd --test 1 --level 2
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_turek_hron_cfd --test 3 --level 1 --dt 0.01 --time 12 --out out/cfd3
+//   --ring-grading A: the ring around the circle graded towards it (TurekHronGeometry::ring_grading)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   int test = 1, level = 1;
   double dt = 0.01, end = 12.0;
   bool chord = true;
+  fl::TurekHronGeometry geometry;  // --ring-grading A: the ring around the circle graded towards it (0: uniform)
   double kick = 0.0;  // CFD3: peak angular velocity (rad/s) of the obstacle's rigid-rotation kick at t = 2..2.25 s
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i];
@@ -31,8 +33,10 @@ int main(int argc, char** argv) {
     else if (k == "--time") end = std::atof(argv[i + 1]);
     else if (k == "--chord") chord = std::atoi(argv[i + 1]) != 0;
     else if (k == "--kick") kick = std::atof(argv[i + 1]);
+    else if (k == "--ring-grading") geometry.ring_grading = std::atof(argv[i + 1]);
     else {
-      std::fprintf(stderr, "sweep_turek_hron_cfd: unknown option '%s' (allowed: --out, --test, --level, --dt, --time, --chord 0|1, --kick OMEGA)\n", argv[i]);
+      std::fprintf(stderr, "sweep_turek_hron_cfd: unknown option '%s' (allowed: --out, --test, --level, --dt, --time, --chord 0|1, "
+                   "--kick OMEGA, --ring-grading A)\n", argv[i]);
       return 2;
     }
   }
@@ -54,7 +58,7 @@ int main(int argc, char** argv) {
     fl::FlowConfig cfg = fl::turek_hron_config(c);
     cfg.chord = chord;
     if (test < 3) cfg.picard_steps = 3;  // Oseen steps from rest before Newton (CFD2 on level 0 diverges without)
-    fl::NavierStokes2D ns(fl::make_turek_hron_channel(level), cfg);
+    fl::NavierStokes2D ns(fl::make_turek_hron_channel(level, geometry), cfg);
     const double setup = double(std::clock() - c0) / CLOCKS_PER_SEC;
     if (test < 3) {
       const auto r = ns.solve_steady();

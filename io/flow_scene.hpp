@@ -42,6 +42,7 @@ struct FlowSetup {
   double mean_velocity = 0.2, density = 1000.0, viscosity = 1e-3;
   int level = 0;                      // after the accuracy preset
   int scene_level = 0;                // as written (accuracy "paper")
+  double ring_grading = 0.0;          // [mesh] ring_grading: the ring around the circle graded towards it (0: uniform)
   bool transient = false;             // cfd3
   int picard_steps = 3, max_iterations = 25;
   double tolerance = 1e-10;

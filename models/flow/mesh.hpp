@@ -88,6 +88,14 @@ inline std::vector<double> uniform_planes(int n) {
   for (int k = 0; k <= n; ++k) p[static_cast<std::size_t>(k)] = static_cast<double>(k) / n;
   return p;
 }
+// n cells of the fixed map t -> (exp(a t) - 1) / (exp(a) - 1) of uniform planes: fine at 0, coarse at 1 (the last
+// cell exp(a) times the first's size in the limit), the same map at every n (a mesh family that refines uniformly).
+inline std::vector<double> graded_planes(int n, double a) {
+  std::vector<double> p = uniform_planes(n);
+  if (!(a > 0.0)) return p;
+  for (int k = 1; k < n; ++k) p[static_cast<std::size_t>(k)] = std::expm1(a * k / n) / std::expm1(a);
+  return p;
+}
 // n cells growing geometrically from the first (a fraction `first` of the length) to the end.
 inline std::vector<double> geometric_planes(int n, double first) {
   if (!(first > 0.0) || first * n > 1.0 + 1e-12) return uniform_planes(n);
@@ -264,6 +272,9 @@ struct TurekHronGeometry {
   double cx = 0.2, cy = 0.2, radius = 0.05;
   double flag_end = 0.6, flag_low = 0.19, flag_high = 0.21;  // the flag: x from the circle to flag_end
   bool flag = true;                                           // false: the cylinder alone (DFG 2D-1/2/3)
+  // grading of the ring around the circle (0: uniform, the benchmark's meshes): its radial planes are
+  // graded_planes(n, ring_grading), the same map at every level, so refining halves every cell
+  double ring_grading = 0.0;
 };
 
 // The channel around the cylinder and flag as 20 blocks: a ring of five blocks between the circle and the
@@ -314,7 +325,7 @@ inline QuadMesh make_turek_hron_channel(int level, const TurekHronGeometry& g = 
     b.left = segment(circ(a0), o0, t_start);
     b.right = segment(circ(a1), o1, t_end);
     b.s_planes = uniform_planes(ns);
-    b.t_planes = uniform_planes(nr);
+    b.t_planes = g.ring_grading > 0.0 ? graded_planes(nr, g.ring_grading) : uniform_planes(nr);
     mb.add(b);
   };
   ring(af, pi / 4, {b1, fh}, {b1, c1}, ny1, kObstacle, 0);             // right, above the flag
