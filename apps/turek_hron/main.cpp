@@ -105,14 +105,8 @@ int run_steady(const pm::io::FlowScene& scene, const pm::apps::CommonOptions& op
   j["newton_iterations"] = r.iterations;
   j["converged"] = r.converged;
   j["residual"] = r.residual;
-  j["drag"] = f.drag;
-  j["lift"] = f.lift;
-  j["drag_mean"] = f.drag;
-  j["drag_amplitude"] = 0.0;
-  j["lift_mean"] = f.lift;
-  j["lift_amplitude"] = 0.0;
-  j["drag_error"] = f.drag / ref.drag - 1.0;
-  j["lift_error"] = f.lift / ref.lift - 1.0;
+  pm::apps::put_steady_force(j, "drag", f.drag, ref.drag);
+  pm::apps::put_steady_force(j, "lift", f.lift, ref.lift);
   j["divergence_l2"] = ns.divergence_l2();
   if (!r.converged)
     j["reason"] = "Newton did not converge in " + std::to_string(r.iterations) + " iterations (residual " +
