@@ -27,8 +27,11 @@ struct ListTranspose {
 // Kernels "polymech::neighbors::transpose_count", "..._fill", "..._sort": count the entries per
 // neighbour, scan, fill (atomic cursors: any order), then sort each group by k (insertion sort: a
 // group holds a particle's few lower-index contacts), so the result is the same for any thread count.
-inline void transpose(const NeighborList& list, ListTranspose& out) {
-  const Index n = list.num_particles;
+// `targets`: the number of points the neighbour indices refer to, for a two-set list (spheres -> facets:
+// for each facet the entries that list it); < 0: the list's own particles.
+inline void transpose(const NeighborList& list, ListTranspose& out, Index targets = -1) {
+  const Index n = targets >= 0 ? targets : list.num_particles;
+  const Index rows = list.num_particles;
   const auto un = static_cast<std::size_t>(n);
   if (out.offsets.extent(0) < un + 1) {
     out.offsets = Kokkos::View<Offset*, MemSpace>("polymech::neighbors::transpose_offsets", un + 1);
@@ -41,12 +44,12 @@ inline void transpose(const NeighborList& list, ListTranspose& out) {
   Kokkos::deep_copy(offsets, Offset(0));
   Kokkos::deep_copy(cursor, Offset(0));
   Kokkos::parallel_for(
-      "polymech::neighbors::transpose_count", range(n), KOKKOS_LAMBDA(const Index i) {
+      "polymech::neighbors::transpose_count", range(rows), KOKKOS_LAMBDA(const Index i) {
         for (Offset k = list.begin(i); k < list.end(i); ++k) Kokkos::atomic_increment(&offsets(list.neighbor(k) + 1));
       });
   detail::scan_offsets(offsets, n);
   Kokkos::parallel_for(
-      "polymech::neighbors::transpose_fill", range(n), KOKKOS_LAMBDA(const Index i) {
+      "polymech::neighbors::transpose_fill", range(rows), KOKKOS_LAMBDA(const Index i) {
         for (Offset k = list.begin(i); k < list.end(i); ++k) {
           const Index j = list.neighbor(k);
           entries(offsets(j) + Kokkos::atomic_fetch_add(&cursor(j), Offset(1))) = k;
