@@ -8,6 +8,8 @@
 
 #include "contact/sphere_facet.hpp"
 #include "dem/contact_forces.hpp"
+#include "dem/surface_loads.hpp"
+#include "neighbors/transpose.hpp"
 
 namespace pm = polymech;
 namespace ct = polymech::contact;
@@ -331,4 +333,75 @@ TEST(SphereFacet, AMovingSurfaceDragsSpheresAndFeelsTheirReaction) {
     EXPECT_NEAR(reaction_moment[k], -moment_sum[k], 1e-12 * norm(force_sum) * 0.03) << k;
   }
   EXPECT_GT(norm(moment_sum), 0.0);
+}
+
+// A deforming surface (the FE tyre's, issue 37) whose nodes move with a rigid motion: the material velocity
+// interpolated from the nodes at the contact point (contact/facet_weights.hpp) is the rigid one (bilinear
+// interpolation reproduces a linear field on a flat grid), so the spheres get the rigid surface's forces; the
+// node loads gathered over the list's transpose by facet add up to minus the spheres' forces, and their moment
+// to minus the spheres' moment (the weights reproduce the contact point): the momentum exchange is exact.
+// Three of the spheres touch a facet's face, one an edge and one a node (regions of eqs. (3)-(10)).
+TEST(SphereFacet, ADeformingSurfaceReturnsTheForcesToItsNodes) {
+  const auto rigid = grid_mesh(4, 4, 0.01), deforming = grid_mesh(4, 4, 0.01);
+  const double r = 0.004, delta = 2e-6, density = 2500, dt = 1e-6;
+  std::vector<V3> p;
+  for (double x : {0.006, 0.017, 0.031}) p.push_back(V3{{x, 0.013, r - delta}});
+  p.push_back(V3{{0.02, 0.025, r - delta}});  // over the edge y ... x = 0.02
+  p.push_back(V3{{0.03, 0.03, r - delta}});   // over a node
+  const pm::Index n = static_cast<pm::Index>(p.size()), nf = rigid.facet_count();
+  const auto all = every_facet(n, nf);
+  dm::SurfaceMotion<double> motion;
+  motion.centre = V3{{0.02, 0.02, 0.0}};
+  motion.velocity = V3{{0.3, -0.1, 0.0}};
+  motion.omega = V3{{0.0, 0.0, 20.0}};
+  const dm::HertzMindlin<double> law{5e10, 2e10, dm::damping_ratio(0.5), 0.4};
+  auto s1 = spheres_at(p, r, density), s2 = spheres_at(p, r, density);
+  dm::SpringView<double> h1("h1", std::size_t(n * nf)), h2("h2", std::size_t(n * nf));
+  dm::body_forces(s1, V3::zero());
+  dm::body_forces(s2, V3::zero());
+  dm::sphere_facet_forces(s1, rigid, all, h1, law, true, dt, motion);
+  // the nodes' velocities: the rigid motion at each node
+  const pm::Index nn = deforming.node_count();
+  pm::VecView<double, 3> node_v("node_v", std::size_t(nn)), node_f("node_f", std::size_t(nn));
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), deforming.nodes);
+  auto hv = Kokkos::create_mirror_view(node_v);
+  for (pm::Index k = 0; k < nn; ++k) {
+    const V3 u = motion.at(V3{{hx(k, 0), hx(k, 1), hx(k, 2)}});
+    for (int q = 0; q < 3; ++q) hv(k, q) = u[q];
+  }
+  Kokkos::deep_copy(node_v, hv);
+  dm::EntryLoadView<double> entry("entry", std::size_t(n * nf));
+  dm::sphere_deforming_facet_forces(s2, deforming, all, h2, law, true, dt, node_v, entry);
+  pm::neighbors::ListTranspose by_facet;
+  pm::neighbors::transpose(all, by_facet, nf);
+  std::vector<int> sizes(static_cast<std::size_t>(nf), 4);
+  auto hfac = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), deforming.facets);
+  std::vector<pm::Index> fn;
+  for (pm::Index f = 0; f < nf; ++f)
+    for (int a = 0; a < 4; ++a) fn.push_back(hfac(f, a));
+  dm::surface_node_loads(dm::surface_adjacency(nn, sizes, fn), by_facet, entry, node_f);
+  const auto a1 = accelerations(s1), a2 = accelerations(s2);
+  const double m = density * 4.0 / 3.0 * dm::kPi * r * r * r;
+  V3 force_sum = V3::zero(), moment_sum = V3::zero(), node_force = V3::zero(), node_moment = V3::zero();
+  for (pm::Index i = 0; i < n; ++i) {
+    const V3 f = m * a2[i];
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a2[i][k], a1[i][k], 1e-12 * norm(a1[i])) << "sphere " << i << " component " << k;
+    force_sum += f;
+    moment_sum += cross(V3{{p[i][0], p[i][1], 0.0}}, f);  // every contact point is under its sphere's centre
+  }
+  auto hf = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), node_f);
+  int loaded = 0;
+  for (pm::Index k = 0; k < nn; ++k) {
+    const V3 f{{hf(k, 0), hf(k, 1), hf(k, 2)}};
+    loaded += norm(f) > 0 ? 1 : 0;
+    node_force += f;
+    node_moment += cross(V3{{hx(k, 0), hx(k, 1), hx(k, 2)}}, f);
+  }
+  // face contacts share 4 nodes, the edge's 2, the node's 1: (3 x 4 - 0 shared) + 2 + 1 distinct nodes at most
+  EXPECT_GE(loaded, 7);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(node_force[k], -force_sum[k], 1e-12 * norm(force_sum)) << k;
+    EXPECT_NEAR(node_moment[k], -moment_sum[k], 1e-12 * norm(force_sum) * 0.03) << k;
+  }
+  EXPECT_GT(norm(force_sum), 0.0);
 }
