@@ -24,7 +24,9 @@ TIMING_KEYS = {"wall_seconds", "shape_function_evaluations_per_second", "wall_se
                # the ISPH app's timings
                "particle_steps_per_second", "ppe_share_of_step",
                # the EFG app's timings
-               "assembly_seconds", "shape_seconds", "factor_seconds", "solve_seconds", "step_seconds_per_step", "j_seconds"}
+               "assembly_seconds", "shape_seconds", "factor_seconds", "solve_seconds", "step_seconds_per_step", "j_seconds",
+               # the flow apps' CPU split (turek_hron: seconds per part of the solve)
+               "cpu_split", "fluid_split", "cpu_seconds_per_step"}
 
 
 def rel(a, b):

@@ -1,4 +1,6 @@
-// The Turek-Hron FSI1 case of apps/turek_hron (issue 36): the steady elastic flag, run from its scene.
+// The cases of apps/turek_hron (issue 36), each run from its scene (io/flow_scene.hpp) into summary.json:
+// the steady CFD1 and CFD2 and the periodic CFD3 on the fixed mesh (apps/turek_hron/cfd.cpp), the steady FSI1
+// with the elastic flag (apps/turek_hron/fsi1.cpp); and the summary keys they share.
 #pragma once
 
 #include <string>
@@ -6,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/app.hpp"
+#include "flow/navier_stokes.hpp"
 #include "io/flow_scene.hpp"
 
 namespace polymech::apps {
@@ -18,6 +21,21 @@ inline void put_steady_force(nlohmann::json& j, const std::string& name, double 
   j[name + "_amplitude"] = 0.0;
   j[name + "_error"] = value / reference - 1.0;
 }
+
+// The flow solve's CPU split (process seconds per part, the assembly and factorisation counts).
+inline nlohmann::json flow_cpu_split(const flow::FlowTimings& t) {
+  return {{"element_kernel", t.element_kernel}, {"scatter", t.scatter}, {"lu_factor", t.factor},
+          {"lu_solve", t.solve}, {"assemblies", t.assemblies}, {"factorizations", t.factorizations}};
+}
+
+// CFD1 and CFD2: the steady Newton solve (Oseen steps first); summary.json with drag and lift against Turek &
+// Hron 2006's Table 12, the Newton iterations, the CPU split. Returns 1 when Newton did not converge.
+int run_turek_hron_steady(const io::FlowScene& scene, const CommonOptions& opt);
+
+// CFD3: BDF2 from rest with the ramped inflow; forces.csv as the run goes, summary.json with the means,
+// amplitudes and frequency over the last lift period (and the period before it). Returns 1 when a step's
+// Newton iteration did not converge.
+int run_turek_hron_transient(const io::FlowScene& scene, const CommonOptions& opt);
 
 // Builds fsi::TurekHronFsi at the scene's level, solves the coupled steady state and writes summary.json
 // (ux_A, uy_A, drag, lift against Turek & Hron 2006's Table 12, the coupling's evaluations and history, the CPU

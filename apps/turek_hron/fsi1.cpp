@@ -2,7 +2,7 @@
 // channel flow at Ubar = 0.2 and the elastic SVK flag, partitioned Dirichlet-Neumann (models/fsi/turek_hron_fsi.hpp:
 // the fluid on the pseudo-elastically moved mesh, the solid under the fluid's nodal forces, IQN-ILS / Aitken /
 // relaxation on the wet nodes' displacement, models/fsi/coupling.hpp).
-#include "apps/turek_hron/fsi1.hpp"
+#include "apps/turek_hron/cases.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -89,9 +89,7 @@ int run_turek_hron_fsi1(const io::FlowScene& scene, const CommonOptions& opt) {
   j["cpu_seconds"] = cpu;
   j["wall_seconds"] = wall;
   j["cpu_split"] = {{"setup", t.setup}, {"mesh_motion", t.mesh}, {"fluid", t.fluid}, {"solid", t.solid}};
-  const auto& ft = model.fluid().timings();
-  j["fluid_split"] = {{"element_kernel", ft.element_kernel}, {"scatter", ft.scatter}, {"lu_factor", ft.factor},
-                      {"lu_solve", ft.solve}, {"assemblies", ft.assemblies}, {"factorizations", ft.factorizations}};
+  j["fluid_split"] = flow_cpu_split(model.fluid().timings());
   j["reference"] = {{"source", "Turek & Hron 2006, Table 12"}, {"ux_A", ref.ux}, {"uy_A", ref.uy}, {"drag", ref.drag}, {"lift", ref.lift}};
   if (!(s.mean_velocity == 0.2 && s.density == 1000.0 && s.viscosity == 1e-3))
     j["reference"]["note"] = "the scene changes the benchmark's inflow, density or viscosity";
