@@ -18,6 +18,7 @@
 // orientation and combined.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -62,12 +63,40 @@ struct LoadUnloadCurve {
   Index dofs = 0, max_plastic_points = 0, points = 0;
   double seconds = 0.0;
   double residual_deflection() const { return deflection.empty() ? 0.0 : deflection.back(); }
+  double peak_force() const { return force.empty() ? 0.0 : *std::max_element(force.begin(), force.end()); }
+  double peak_deflection() const { return deflection.empty() ? 0.0 : *std::max_element(deflection.begin(), deflection.end()); }
 };
 
 // The Hill law of 8YSZ-like parameters for a beam at theta_degrees (crystal -> specimen axes).
 inline materials::HillPlasticity<double> cantilever_law(const materials::CubicHillParameters<double>& p, double theta_degrees) {
   const double theta = theta_degrees * 3.14159265358979323846 / 180.0;
   return materials::make_cubic_hill(p, materials::cantilever_rotation(theta));
+}
+
+// The run's monitor of the work-conjugate tip deflection delta = f_ext . u / F_peak (F_peak the end load's
+// total, from the external force vector f, which must outlive the monitor).
+inline Monitor tip_deflection_monitor(const std::vector<double>& f) {
+  double F = 0.0;
+  for (std::size_t i = 2; i < f.size(); i += 3) F -= f[i];
+  Monitor mon;
+  mon.displacement = [&f, F](const std::vector<double>& u) {
+    double w = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) w += f[i] * u[i];
+    return w / F;
+  };
+  return mon;
+}
+
+// The load path of a curve: 0 -> 1 in load_increments steps, then back to 0 in unload_increments (if any).
+inline LoadPath load_unload_path(const CurveSpec& s) {
+  LoadPath path;
+  path.points = {0.0, 1.0};
+  path.increments = {s.load_increments};
+  if (s.unload_increments > 0) {
+    path.points.push_back(0.0);
+    path.increments.push_back(s.unload_increments);
+  }
+  return path;
 }
 
 template <class T>
@@ -80,21 +109,8 @@ LoadUnloadCurve load_unload_curve(const CurveSpec& s, const materials::CubicHill
   c.plasticity = law;
   ElastoPlastic<T, 3> m(c, s.newton);
   const std::vector<double> f = models::to_host(m.external_force());
-  double F = 0.0;
-  for (std::size_t i = 2; i < f.size(); i += 3) F -= f[i];
-  Monitor mon;
-  mon.displacement = [&f, F](const std::vector<double>& u) {
-    double w = 0.0;
-    for (std::size_t i = 0; i < u.size(); ++i) w += f[i] * u[i];
-    return w / F;
-  };
-  LoadPath path;
-  path.points = {0.0, 1.0};
-  path.increments = {s.load_increments};
-  if (s.unload_increments > 0) {
-    path.points.push_back(0.0);
-    path.increments.push_back(s.unload_increments);
-  }
+  const Monitor mon = tip_deflection_monitor(f);
+  const LoadPath path = load_unload_path(s);
   // the planned load factors, in order
   std::vector<double> planned;
   for (std::size_t k = 0; k + 1 < path.points.size(); ++k)
@@ -123,6 +139,40 @@ LoadUnloadCurve load_unload_curve(const CurveSpec& s, const materials::CubicHill
                              " planned load steps were reported");
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+// The curve of a linear elastic beam (no effect "plasticity": Config::plasticity left empty, no history): the
+// same load path and tip measure as load_unload_curve, one Newton iteration per step.
+template <class T>
+LoadUnloadCurve elastic_load_unload_curve(const CurveSpec& s, const materials::CubicHillParameters<double>& p) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Config<3> c = micro_cantilever(s.beam, cantilever_law(p, s.beam.theta_degrees).C);
+  ElastoPlastic<T, 3> m(c, s.newton);
+  const std::vector<double> f = models::to_host(m.external_force());
+  const Monitor mon = tip_deflection_monitor(f);
+  LoadUnloadCurve out;
+  out.dofs = m.dof_count();
+  out.points = m.element_count() * m.points_per_element();
+  for (const StepResult& r : m.run(load_unload_path(s), mon)) {  // an elastic step never cuts: every step is a planned one
+    out.newton_iterations += r.newton_iterations;
+    out.linear_iterations += r.linear_iterations;
+    out.force.push_back(r.load_factor * s.beam.force);
+    out.deflection.push_back(r.displacement);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+// The closed-form references of a beam at theta_degrees: the uniaxial modulus of the cubic crystal along the
+// beam axis and the Euler-Bernoulli compliance L^3 / (3 E I) of the beam clamped at its root (I of the pentagon).
+struct BeamTheory {
+  double modulus = 0.0, compliance = 0.0;
+};
+inline BeamTheory beam_theory(const MicroCantileverSpec& b, const materials::CubicConstants<double>& k, double theta_degrees) {
+  BeamTheory t;
+  t.modulus = materials::cubic_uniaxial_modulus(k, materials::cantilever_axis(theta_degrees * 3.14159265358979323846 / 180.0));
+  t.compliance = std::pow(b.length, 3) / (3.0 * t.modulus * pentagon_section(b).second_moment);
+  return t;
 }
 
 // The six parameters in the estimator's order, and back.
