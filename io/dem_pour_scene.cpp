@@ -50,6 +50,30 @@ void read_wheel(const SceneTable& t, const dem::PourSpec& p, double duration, de
   t.finish();
 }
 
+// [tyre] (the `fe_tyre` effect, seed 002 paper 2 sec. 4; models/dem/tyre_drive.hpp): the FE tyre's lattice,
+// inflation, damping and tread rubber (its size is [wheel]'s radius and width).
+void read_tyre(const SceneTable& t, dem::TyreInit& y) {
+  if (t.has("cells")) {
+    const auto cells = t.reals("cells", Range{1.0, 1e5, false, false, "cells"});
+    if (cells.size() != 3 || cells[0] < 3 || cells[1] < 2 || cells[0] != std::floor(cells[0]) || cells[1] != std::floor(cells[1]) ||
+        cells[2] != std::floor(cells[2]))
+      t.fail("cells", "must be three integers [around, across, through] with around >= 3 and across >= 2 (cells round the wheel, along "
+                      "the section's contour, through the wall)");
+    y.around = static_cast<int>(cells[0]);
+    y.across = static_cast<int>(cells[1]);
+    y.through = static_cast<int>(cells[2]);
+  }
+  if (double(y.around) * y.across * y.through > 1e6) t.fail("cells", "makes more than 1e6 cells");
+  y.order = static_cast<int>(t.integer("order", y.order, 1, 4));
+  y.pressure = t.real("pressure", y.pressure, Range{0.0, 1e8, false, false, "Pa (inflation)"});
+  y.inflate_to = t.real("inflate_to", y.inflate_to, Range{1e-6, 1e3, false, false, "s after wheel.start (the inflation's ramp 0 -> pressure)"});
+  y.damping = t.real("damping", y.damping, Range{0.0, 1e6, false, false, "1/s (mass-proportional, relative to the rim's rigid motion)"});
+  y.tread_young = t.real("tread_youngs_modulus", y.tread_young, pl::modulus());
+  y.tread_poisson = t.real("tread_poisson_ratio", y.tread_poisson, Range{-1.0, 0.5, true, true});
+  y.mass = t.real("mass", y.mass, pl::mass());
+  t.finish();
+}
+
 }  // namespace
 
 DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneOptions& options) {
@@ -84,10 +108,16 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   const auto wheel = root.optional_table("wheel");
   if (fx.has("fe_surfaces") && !wheel)
     s.model.fail("effects", "lists \"fe_surfaces\", but the scene has no [wheel] (the bin is planes; the wheel is the FE surface)");
-  if (fx.has("rigid_wheel") && !wheel)
-    s.model.fail("effects", "lists \"rigid_wheel\", but the scene has no [wheel] table (radius, width, mass, slip, ...)");
-  if (wheel && !fx.has("rigid_wheel"))
-    wheel->fail_table("needs the effects \"fe_surfaces\" and \"rigid_wheel\" in model.effects");
+  for (const char* e : {"rigid_wheel", "fe_tyre"})
+    if (fx.has(e) && !wheel)
+      s.model.fail("effects", std::string("lists \"") + e + "\", but the scene has no [wheel] table (radius, width, mass, slip, ...)");
+  if (fx.has("rigid_wheel") && fx.has("fe_tyre"))
+    s.model.fail("effects", "lists both \"rigid_wheel\" and \"fe_tyre\"; the wheel is one or the other");
+  if (wheel && !fx.has("rigid_wheel") && !fx.has("fe_tyre"))
+    wheel->fail_table("needs the effects \"fe_surfaces\" and \"rigid_wheel\" (or \"fe_tyre\") in model.effects");
+  const auto tyre = root.optional_table("tyre");
+  if (tyre && !fx.has("fe_tyre")) tyre->fail_table("needs the effect \"fe_tyre\" in model.effects");
+  if (tyre) read_tyre(*tyre, c.tyre);
 
   const SceneTable gravel = root.table("gravel");
   auto& p = out.pour;
@@ -148,7 +178,10 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
     if (c.wheel.enabled()) {
       c.wheel.parked = {c.wheel.x_start, c.wheel.y_centre, dem::pour_top(p) + 3 * p.radius_max + 2 * c.wheel.radius};
       pour.wheel = c.wheel;
-      pour.surface = dem::wheel_surface(c.wheel);
+      if (fx.has("fe_tyre"))
+        pour.tyre = c.tyre;  // its surface is the tyre's own (dem::TyreDrive)
+      else
+        pour.surface = dem::wheel_surface(c.wheel);
     }
     const double top = dem::pour_top(p);
     if (top > 10 * p.bin[2])
@@ -166,6 +199,13 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   const double spheres_per_particle = p.shapes.size() == 1 && p.shapes[0] == "sphere" ? 1.0 : 5.0;
   out.steps = static_cast<std::int64_t>(std::ceil(out.duration / c.dt));
   out.cost = dem_cost(spheres_per_particle * p.count, double(out.steps));
+  if (fx.has("fe_tyre")) {  // the tyre's explicit steps after the set-down: 3.6e6 DoF-steps/s (docs/VALIDATION.md, the tyre alone)
+    const auto& y = c.tyre;
+    const double dofs = 3.0 * (y.around * y.order) * (y.across * y.order + 1.0) * (y.through * y.order + 1.0);
+    out.cost.seconds += (out.duration - c.wheel.start) / c.dt * dofs / 3.6e6;
+    out.cost.bytes += dofs * 60.0 * 8.0;
+    out.cost.rate += "; the tyre's " + format_number(dofs) + " DoFs at 3.6e6 DoF-steps/s after the set-down";
+  }
   out.cost.size_keys = {"gravel.count = " + std::to_string(count) + " (" + std::to_string(p.count) + " at accuracy '" +
                             out.header.accuracy + "')",
                         "time.duration = " + format_number(out.duration) + " s", "dt = " + format_number(c.dt) + " s"};
@@ -173,6 +213,9 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   if (out.sample_every == 0)  // with a wheel: 400 samples of its drive (the histories of Figs. 8-10)
     out.sample_every = std::max<std::int64_t>(
         1, c.wheel.enabled() ? static_cast<std::int64_t>((out.duration - c.wheel.start) / c.dt / 400) : static_cast<std::int64_t>(out.cost.steps / 200));
+  // the tyre's stable step may be the smaller one: without time.dt the model takes the smaller of the spheres'
+  // (the estimate above) and the tyre's, and the app counts the steps from it
+  if (fx.has("fe_tyre") && !(dt > 0)) c.dt = 0.0;
   return out;
 }
 

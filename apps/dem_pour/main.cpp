@@ -29,17 +29,17 @@ namespace {
 int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& opt, const pm::apps::RestartOptions& ropt,
              const std::string& lammps_data) {
   const dm::Config& c = scene.config;
-  const auto steps = opt.steps > 0 ? opt.steps : scene.steps;
-  pm::apps::Case cs({"dem_pour", scene.header, steps, c.dt}, opt, ropt);
+  dm::Dem<double> model(c);  // (with a tyre and no time.dt: the smaller of the spheres' and the tyre's step)
+  const auto steps = opt.steps > 0 ? opt.steps : c.dt > 0 ? scene.steps : static_cast<std::int64_t>(std::ceil(scene.duration / model.dt()));
+  pm::apps::Case cs({"dem_pour", scene.header, steps, model.dt()}, opt, ropt);
   if (!lammps_data.empty()) pm::io::write_lammps_data(lammps_data, c, scene.pour);
-  dm::Dem<double> model(c);
   const auto spheres = model.sphere_count();
   std::fprintf(stderr,
                "[dem_pour] %s\n  accuracy %s: %d particles (%zu clumps, %lld spheres), radii %.3g-%.3g m, bin %.3g x %.3g x %.3g m\n"
                "  dt = %.3g s (limit %s), %lld steps to %.3g s, %s\n",
                scene.header.title.c_str(), scene.header.accuracy.c_str(), scene.pour.count, model.clump_count(),
                static_cast<long long>(spheres), scene.pour.radius_min, scene.pour.radius_max, scene.pour.bin[0], scene.pour.bin[1],
-               scene.pour.bin[2], c.dt, model.limit().describe().c_str(), static_cast<long long>(steps), steps * c.dt,
+               scene.pour.bin[2], model.dt(), model.limit().describe().c_str(), static_cast<long long>(steps), steps * model.dt(),
                pm::apps::thread_count().c_str());
 
   // snapshots: displacement from the start, velocity, radius and the clump each sphere belongs to
@@ -62,7 +62,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   };
   // the heap: the wall x = lx opens at release_at (moved far behind the spheres; planes are state, so a
   // restart after the release keeps it open)
-  const auto release_step = scene.pour.release_at > 0 ? static_cast<std::int64_t>(std::llround(scene.pour.release_at / c.dt)) : -1;
+  const auto release_step = scene.pour.release_at > 0 ? static_cast<std::int64_t>(std::llround(scene.pour.release_at / model.dt())) : -1;
   cs.after_step = [&](std::int64_t k) {
     if (k == release_step) model.move_plane(dm::kReleaseWall, {1e3, 0.0, 0.0});
   };
@@ -91,6 +91,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
     pm::io::write_csv(cs.out() / "track_profile.csv", {"y", "surface_height"}, dm::track_profile(rows, scene.pour, c.wheel, w));
     auto mean = [&](double x) { return means.samples > 0 ? nlohmann::json(x) : nlohmann::json(nullptr); };
     j["sinkage_mm"] = mean(means.sinkage);
+    j["tread_sinkage_mm"] = mean(means.tread_sinkage);
     j["vertical_force"] = mean(means.vertical);
     j["tractive_force"] = mean(means.tractive);
     j["driving_torque"] = mean(means.torque);
@@ -100,6 +101,10 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                   {"speed", c.wheel.speed}, {"slip", c.wheel.slip}, {"start", c.wheel.start}, {"facets_around", c.wheel.around},
                   {"facets_across", c.wheel.across}, {"bed_level", w.bed_level}, {"travel", w.centre[0] - c.wheel.x_start},
                   {"time_driven", w.time}};
+    if (c.effects.has("fe_tyre"))  // the deformable tyre (issue 37): its lattice and inflation; the wheel's facets are its surface's
+      j["tyre"] = {{"cells", {c.tyre.around, c.tyre.across, c.tyre.through}}, {"order", c.tyre.order}, {"pressure", c.tyre.pressure},
+                   {"dofs", model.tyre().solid().dof_count()}, {"critical_step", model.tyre().solid().critical_time_step()},
+                   {"surface_facets", model.surface().facet_count()}, {"damping", c.tyre.damping}};
     files.insert(files.end(), {"wheel.csv", "track_profile.csv"});
     std::printf("wheel: %.3g s after it was set down, travelled %.3g m; steady stage (t >= %.3g s): rim sinkage %.2f mm (paper, deformable "
                 "tyre: 53.6), vertical force %.4g N (load %.4g), tractive force %.4g N, driving torque %.4g N m (wheel.csv)\n",
@@ -113,7 +118,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   j["clumps"] = model.clump_count();
   j["spheres"] = spheres;
   j["shapes"] = scene.pour.shapes;
-  j["dt"] = c.dt;
+  j["dt"] = model.dt();
   j["time_step_limit"] = model.limit().limit;
   j["steps"] = stats.steps;
   j["simulated_time"] = model.time();

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "core/types.hpp"
+#include "particles/reductions.hpp"
 
 namespace polymech::solid {
 
@@ -169,6 +170,40 @@ template <class T>
 void explicit_power_update(Index n, const View1<char>& kind, const View1<T>& w, T sc, const View1<T>& xx) {
   Kokkos::parallel_for(
       "polymech::solid::fse_power_update", range(n), KOKKOS_LAMBDA(const Index i) { xx(i) = kind(i) == 0 ? sc * w(i) : T(0); });
+}
+
+// Mass-proportional damping relative to a rigid motion (issue 37: a rolling tyre's damping must not brake its
+// rigid rotation with the rim): on the free DoFs r += alpha m (v - v_f), v_f = V + w x (x - c) the frame's
+// velocity at the node's current position x = X + u (3D; w the angular velocity vector), so that with a = -r / m
+// the node is damped towards the frame's motion. Returns what the dashpots give the frame's body, sum of the
+// added r and its moment about c along the unit axis n (fx, fy, fz, m_n), summed in node order (ordered_sum: any
+// thread count gives the same bits); the caller adds it to the body, so the damping conserves momentum.
+struct DampingFrame {
+  double c[3] = {0, 0, 0}, V[3] = {0, 0, 0}, w[3] = {0, 0, 0}, n[3] = {0, 0, 1};
+};
+
+template <class T>
+Kokkos::Array<double, 4> explicit_frame_damping(Index nodes, const View1<char>& kind, const View1<double>& X, const View1<T>& u,
+                                                const View1<T>& v, const View1<T>& m, double alpha, const DampingFrame& f,
+                                                const View1<T>& r, particles::SumPartials& partials) {
+  const double c0 = f.c[0], c1 = f.c[1], c2 = f.c[2], V0 = f.V[0], V1 = f.V[1], V2 = f.V[2];
+  const double w0 = f.w[0], w1 = f.w[1], w2 = f.w[2], n0 = f.n[0], n1 = f.n[1], n2 = f.n[2];
+  return particles::ordered_sum<4>(
+      "polymech::solid::fse_frame_damping", static_cast<std::int64_t>(nodes),
+      KOKKOS_LAMBDA(const std::int64_t j, double* acc) {
+        const Index i = static_cast<Index>(3 * j);
+        const double y0 = X(i) + double(u(i)) - c0, y1 = X(i + 1) + double(u(i + 1)) - c1, y2 = X(i + 2) + double(u(i + 2)) - c2;
+        const double vf[3] = {V0 + w1 * y2 - w2 * y1, V1 + w2 * y0 - w0 * y2, V2 + w0 * y1 - w1 * y0};
+        double g[3] = {0, 0, 0};
+        for (int d = 0; d < 3; ++d) {
+          if (kind(i + d) != 0) continue;
+          g[d] = alpha * double(m(i + d)) * (double(v(i + d)) - vf[d]);
+          r(i + d) += static_cast<T>(g[d]);
+          acc[d] += g[d];
+        }
+        acc[3] += n0 * (y1 * g[2] - y2 * g[1]) + n1 * (y2 * g[0] - y0 * g[2]) + n2 * (y0 * g[1] - y1 * g[0]);
+      },
+      partials);
 }
 
 }  // namespace polymech::solid

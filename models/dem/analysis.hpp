@@ -83,17 +83,20 @@ inline Bed settled_bed(const std::vector<std::array<double, 4>>& rows, const Pou
 // The columns of a wheel's history (wheel.csv; Figs. 8-10).
 inline const std::vector<std::string>& wheel_columns() {
   static const std::vector<std::string> c = {"time", "time_from_start", "x", "z", "sinkage_mm", "vertical_force", "tractive_force",
-                                             "driving_torque", "load", "speed"};
+                                             "driving_torque", "load", "speed", "tread_sinkage_mm"};
   return c;
 }
+// sinkage_mm: the rim's (the bed's level less its centre's height less R: for a tyre, its deflection included);
+// tread_sinkage_mm: the tread's lowest point below the bed's level (the rut under it; a rigid wheel: the same).
 inline std::vector<double> wheel_row(double time, const WheelState& w) {
-  return {time, w.time, w.centre[0], w.centre[2], 1e3 * w.sinkage, w.vertical_force, w.tractive_force, w.driving_torque, w.load, w.speed};
+  return {time, w.time, w.centre[0], w.centre[2], 1e3 * w.sinkage, w.vertical_force, w.tractive_force, w.driving_torque, w.load,
+          w.speed, 1e3 * (w.bed_level - w.tread_low)};
 }
 
 // Means of the wheel's histories (columns as wheel_columns()) over its steady stage: the last half of the
 // time after the speed ramp (the whole drive's last quarter when that is shorter than a quarter of it).
 struct WheelMeans {
-  double from = 0.0, sinkage = 0.0, vertical = 0.0, tractive = 0.0, torque = 0.0;
+  double from = 0.0, sinkage = 0.0, vertical = 0.0, tractive = 0.0, torque = 0.0, tread_sinkage = 0.0;
   int samples = 0;
 };
 inline WheelMeans steady_means(const std::vector<std::vector<double>>& w, double speed_to) {
@@ -107,6 +110,7 @@ inline WheelMeans steady_means(const std::vector<std::vector<double>>& w, double
     m.vertical += w[5][k];
     m.tractive += w[6][k];
     m.torque += w[7][k];
+    m.tread_sinkage += w[10][k];
     ++m.samples;
   }
   if (m.samples > 0) {
@@ -114,6 +118,7 @@ inline WheelMeans steady_means(const std::vector<std::vector<double>>& w, double
     m.vertical /= m.samples;
     m.tractive /= m.samples;
     m.torque /= m.samples;
+    m.tread_sinkage /= m.samples;
   }
   return m;
 }

@@ -44,6 +44,20 @@ struct ClumpInit {
   std::array<double, 3> velocity{}, omega{};       // of the centre of mass; angular velocity (world)
 };
 
+// The deformable tyre of the `fe_tyre` effect (seed 002 paper 2 §4; issue 37; models/dem/tyre_drive.hpp): the
+// tyre 37x12.5R16.5 of models/solid/tyre.hpp (its outer radius and width are WheelSpec's) as an explicit
+// finite-strain solid whose beads are tied to the rim, a rigid body that carries WheelSpec's load, speed and slip.
+struct TyreInit {
+  int around = 24, across = 8, through = 1;  // cells round the wheel, along the section's contour, through the wall
+  int order = 2;                             // Lagrange order of the cells
+  double pressure = 0.35e6;                  // inflation (Pa), a follower pressure on the inner surface
+  double inflate_to = 0.010;                 // its ramp from set-down (s; paper 2: 0-10 ms)
+  double damping = 200.0;                    // 1/s, mass-proportional, relative to the rim's rigid motion
+  double tread_young = 6.0e6;                // the tread rubber's E and nu for the sphere-tread Hertz law
+  double tread_poisson = 0.49;
+  double mass = 37.6;                        // kg: the tyre's own mass (its density follows from its volume)
+};
+
 struct Config {
   Material particle;             // every sphere
   Material wall;                 // planes and FE surfaces
@@ -57,7 +71,9 @@ struct Config {
   std::vector<SphereInit> spheres;
   std::vector<PlaneInit> planes;
   SurfaceInit surface;           // the `fe_surfaces` effect
-  WheelSpec wheel;               // the `rigid_wheel` effect: `surface` is the wheel's, relative to its centre
+  WheelSpec wheel;               // the `rigid_wheel` effect: `surface` is the wheel's, relative to its centre;
+                                 // the `fe_tyre` effect: the schedule of the tyre's rim
+  TyreInit tyre;                 // the `fe_tyre` effect (its surface is built from the tyre, not `surface`)
   std::vector<ClumpShape> clump_shapes;  // the `clumps` effect
   std::vector<ClumpInit> clumps;
   int mass_columns = 200;        // columns across a shape for its mass properties (clump_shapes.hpp)

@@ -12,7 +12,9 @@
 // Effects: `friction` (the tangential spring, its history), `damping` (restitution < 1), `fe_surfaces`,
 // `clumps`, `rigid_wheel` (the surface is a wheel, dem/wheel.hpp, driven by dem/wheel_drive.hpp: set
 // on the bed at WheelSpec::start, then its x velocity and spin prescribed, its height free under the
-// load; the reaction of the spheres on it summed in index order each step).
+// load; the reaction of the spheres on it summed in index order each step), `fe_tyre` (the surface is the
+// outer side of a deformable FE tyre, dem/tyre_drive.hpp, on the same schedule: stepped with the spheres,
+// the contacts' forces returned to its nodes, dem/surface_loads.hpp).
 // The time step is refused above time_step_limit() (dem/setup.hpp: Rayleigh and Hertz contact time).
 // The members that fill the device arrays from the configuration: dem/allocation.hpp.
 #pragma once
@@ -36,6 +38,8 @@
 #include "dem/contact_forces.hpp"
 #include "dem/effect_table.hpp"
 #include "dem/setup.hpp"
+#include "dem/surface_loads.hpp"
+#include "dem/tyre_drive.hpp"
 #include "dem/wheel_drive.hpp"
 #include "particles/integrators.hpp"
 #include "rigid/rigid_body.hpp"
@@ -61,10 +65,12 @@ class Dem {
         surfaces_(c.effects.has("fe_surfaces")),
         clumps_(c.effects.has("clumps")),
         wheel_(c.effects.has("rigid_wheel")),
+        tyre_(c.effects.has("fe_tyre")),
         clump_init_(c.clumps.empty() ? ClumpBodies{} : expand_clumps(c)),
         pairs_(T(2 * max_radius(c, clump_init_)), T(skin(c, clump_init_)), neighbors::ListKind::half, "polymech::dem::sphere_pairs", friction_),
         facet_pairs_(T(0), T(skin(c, clump_init_)), neighbors::ListKind::full, "polymech::dem::facet_pairs", friction_) {
     limit_ = time_step_limit(cfg_);
+    const bool automatic = cfg_.dt <= 0;
     if (cfg_.dt <= 0) cfg_.dt = cfg_.dt_safety * limit_.limit;
     if (cfg_.dt > limit_.limit)
       throw std::invalid_argument("time step " + std::to_string(cfg_.dt) + " s exceeds the limit " + limit_.describe());
@@ -74,11 +80,21 @@ class Dem {
     const auto& w = cfg_.wall;
     pp_ = law(p, p, beta, mu);
     pw_ = law(p, w, beta, mu);
+    pf_ = tyre_ ? law(p, Material{cfg_.tyre.tread_young, cfg_.tyre.tread_poisson, 0.0}, beta, mu) : pw_;  // spheres on the tread
     allocate_spheres();
     pairs_.set_sizes(s_.radius);  // sphere pairs within r_i + r_j + skin (LIGGGHTS' rule), not 2 r_max + skin
     pairs_.set_row_capacity(16);  // a half row holds a sphere's few larger-index neighbours: one search per build
     if (clumps_) allocate_clumps();
     allocate_planes();
+    if (tyre_) {
+      if (!surfaces_ || wheel_) throw std::invalid_argument("dem: effect fe_tyre needs fe_surfaces and excludes rigid_wheel");
+      // one common step: the smaller of the spheres' and the tyre's (safety x its critical step) when the scene
+      // gives none; a given step above the tyre's is refused (solid::HyperelasticExplicit's message)
+      tyre_drive_ = TyreDrive<T>(cfg_.wheel, cfg_.tyre, automatic ? 0.0 : cfg_.dt);
+      if (automatic && tyre_drive_.solid().time_step() < cfg_.dt) cfg_.dt = tyre_drive_.solid().time_step();
+      tyre_drive_.set_time_step(cfg_.dt);
+      cfg_.surface = tyre_drive_.surface();
+    }
     if (surfaces_) allocate_surface();
     if (wheel_) {
       if (!surfaces_) throw std::invalid_argument("dem: effect rigid_wheel needs fe_surfaces (the wheel's mesh)");
@@ -103,6 +119,7 @@ class Dem {
   // pass (sphere_sphere_gather with h). With clumps, the members' motion is the clumps': separate passes.
   void advance_first_half() {
     if (wheel_) wheel_drive_.first_half(step_, cfg_.dt, s_, mesh_);
+    if (tyre_) tyre_drive_.first_half(step_, cfg_.dt, s_, mesh_);
     const T dt = T(cfg_.dt);
     if (!clumps_) {
       moved_ = kick_drift_start(s_, T(0.5) * dt, dt, gravity(), pairs_.queries_at_build());
@@ -142,7 +159,9 @@ class Dem {
       walls = PlaneContacts<T>{planes_, plane_history_, near_planes_, pw_};
     }
     sphere_sphere_rows(s_, pairs_.list(), pairs_.history().values, pair_load_, pp_, friction_, dt, walls);
-    if (surfaces_) {
+    if (tyre_) {
+      if (tyre_drive_.placed()) tyre_contacts(dt);
+    } else if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt,
                           wheel_ ? wheel_drive_.motion(step_, cfg_.dt) : SurfaceMotion<T>(), wheel_drive_.reaction());
@@ -157,6 +176,7 @@ class Dem {
   }
   void advance_second_half() {
     if (wheel_) wheel_drive_.second_half(cfg_.dt);  // the wheel's height: m z'' = F_z (gravel + load)
+    if (tyre_) tyre_drive_.second_half();           // the tyre under the contacts' node forces
     const T h = T(0.5) * T(cfg_.dt);
     if (gather_pending_) {
       sphere_sphere_gather(s_, transposed_, pair_load_, h);
@@ -198,9 +218,14 @@ class Dem {
   }
 
   // The wheel (effect rigid_wheel) after the last step.
-  WheelState wheel() const { return wheel_ ? wheel_drive_.state(step_, cfg_.dt) : WheelState(); }
-  // The spheres' total force on the wheel and its moment about the wheel's centre (last step).
-  std::array<double, 6> wheel_contact() const { return wheel_drive_.contact(); }
+  WheelState wheel() const {
+    if (tyre_) return tyre_drive_.state(step_, cfg_.dt);
+    return wheel_ ? wheel_drive_.state(step_, cfg_.dt) : WheelState();
+  }
+  // The spheres' total force on the wheel (tyre) and its moment about the wheel's (rim's) centre (last step).
+  std::array<double, 6> wheel_contact() const { return tyre_ ? tyre_drive_.contact() : wheel_drive_.contact(); }
+  // The deformable tyre (effect fe_tyre).
+  const TyreDrive<T>& tyre() const { return tyre_drive_; }
 
   // The watchdog's check: the first sphere whose state is not finite, or that moves more than the
   // neighbour lists' skin in one step (issue 33 item 2): the lists are rebuilt when a sphere has moved half
@@ -227,6 +252,8 @@ class Dem {
     transposed_at_ = -1;
     planes_at_ = -1;
     if (surfaces_) models::load_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
+    by_facet_at_ = -1;
+    tyre_drive_.restored(mesh_);  // its clock and rim from the record, its surface placed
     current_positions(s_);
     prepared_ = true;  // the accelerations of this state are part of it
   }
@@ -309,7 +336,7 @@ class Dem {
       throw std::invalid_argument("dem: particle E > 0, rho > 0 and nu < 0.5 are required");
     if (c.effects.has("damping") && !(c.restitution > 0 && c.restitution <= 1))
       throw std::invalid_argument("dem: restitution must be in (0, 1]");
-    if (c.effects.has("fe_surfaces") && c.surface.empty())
+    if (c.effects.has("fe_surfaces") && c.surface.empty() && !c.effects.has("fe_tyre"))
       throw std::invalid_argument("dem: effect fe_surfaces without a surface");
   }
 
@@ -320,8 +347,26 @@ class Dem {
   void allocate_surface() {
     std::vector<Index> nodes(cfg_.surface.facet_nodes.begin(), cfg_.surface.facet_nodes.end());
     mesh_ = contact::make_surface_mesh<T>(cfg_.surface.nodes, cfg_.surface.facet_sizes, nodes, "polymech::dem::surface");
-    facet_pairs_ = Pairs(T(max_radius(cfg_, clump_init_)) + contact::max_facet_radius(mesh_), T(skin(cfg_, clump_init_)), neighbors::ListKind::full,
+    // a deforming surface's facets grow (the tyre's inflation, a few per cent): a quarter more reach
+    const T reach = contact::max_facet_radius(mesh_) * T(tyre_ ? 1.25 : 1.0);
+    facet_pairs_ = Pairs(T(max_radius(cfg_, clump_init_)) + reach, T(skin(cfg_, clump_init_)), neighbors::ListKind::full,
                          "polymech::dem::facet_pairs", friction_);
+  }
+  // The spheres against the tyre's deforming surface: the contacts (the material velocity interpolated from
+  // its nodes), each entry's force and weights, then the node forces gathered over the list's transpose by
+  // facet (dem/surface_loads.hpp).
+  void tyre_contacts(T dt) {
+    facet_pairs_.update(s_.x, mesh_.centroid);
+    const auto& list = facet_pairs_.list();
+    if (by_facet_at_ != facet_pairs_.builds()) {
+      neighbors::transpose(list, by_facet_, mesh_.facet_count());
+      const auto np = static_cast<std::size_t>(list.num_pairs);
+      if (entry_load_.extent(0) < np)
+        entry_load_ = EntryLoadView<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::dem::tyre_entry_load")), np + np / 8 + 16);
+      by_facet_at_ = facet_pairs_.builds();
+    }
+    sphere_deforming_facet_forces(s_, mesh_, list, facet_pairs_.history().values, pf_, friction_, dt, tyre_drive_.node_velocity(), entry_load_);
+    surface_node_loads(tyre_drive_.adjacency(), by_facet_, entry_load_, tyre_drive_.node_force());
   }
   void register_state() {
     state_.add("u", s_.u);
@@ -333,13 +378,14 @@ class Dem {
     state_.add("planes", planes_);
     state_.add("clump_bodies", clumps_set_.bodies);
     wheel_drive_.register_state(state_);  // "wheel", "wheel_info" (nothing without the wheel)
+    tyre_drive_.register_state(state_);   // "tyre_u", "tyre_v", "tyre_a", "tyre_info" (nothing without the tyre)
     // Not registered: the pair histories (tangential springs), double-buffered inside ContactPairs and
     // reallocated when a list grows; a watchdog restore keeps the current springs (docs/METHODS.md), a
     // checkpoint writes them with the lists (save()).
   }
 
   Config cfg_;
-  bool friction_, damping_, surfaces_, clumps_, wheel_;
+  bool friction_, damping_, surfaces_, clumps_, wheel_, tyre_;
   ClumpBodies clump_init_;
   Pairs pairs_, facet_pairs_;
   neighbors::ListTranspose transposed_;  // of the half list pairs_ (built with it)
@@ -349,12 +395,16 @@ class Dem {
   int planes_at_ = -1;                   // the pairs_.builds() the mask is of
   ClumpSet<T> clumps_set_;
   TimeStepLimit limit_;
-  HertzMindlin<T> pp_, pw_;
+  HertzMindlin<T> pp_, pw_, pf_;  // sphere-sphere, sphere-wall, sphere-facet
   SphereSet<T> s_;
   PlaneView<T> planes_;
   SpringView<T> plane_history_;
   contact::SurfaceMesh<T> mesh_;
   WheelDrive<T> wheel_drive_;  // the wheel (rigid_wheel; dem/wheel_drive.hpp)
+  TyreDrive<T> tyre_drive_;    // the tyre (fe_tyre; dem/tyre_drive.hpp)
+  neighbors::ListTranspose by_facet_;  // of the sphere-facet list over the facets (fe_tyre)
+  EntryLoadView<T> entry_load_;         // per sphere-facet entry: force on the tyre and corner weights (fe_tyre)
+  int by_facet_at_ = -1;                // the facet_pairs_.builds() by_facet_ is of
   models::StateRegistry state_;
   std::int64_t step_ = 0;
   bool prepared_ = false;

@@ -25,6 +25,11 @@ inline const std::vector<EffectSpec>& effect_table() {
       {"rigid_wheel", "the FE surface is a rigid wheel driven over the bed: load and speed schedule, slip (sec. 4)",
        {"fe_surfaces"}, {"polymech::contact::place_rigid_surface", "polymech::dem::wheel_reaction_sum"},
        "one rigid body, the mesh's reference nodes and 6 reals per sphere (what it gives the wheel)"},
+      {"fe_tyre", "the FE surface is a deformable tyre (explicit finite strain, inflated, rim tied to the beads) on the wheel's "
+       "schedule; contact forces returned to its nodes (sec. 4, issue 37)",
+       {"fe_surfaces"}, {"polymech::dem::sphere_deforming_facet", "polymech::dem::surface_node_loads", "polymech::dem::place_tyre_surface",
+                         "polymech::dem::tyre_surface_loads", "polymech::dem::tyre_reaction_sum", "polymech::solid::fse_frame_damping"},
+       "the tyre's FE model (3 x 6 reals per node, its elements' geometry), 8 reals per sphere-facet entry"},
   };
   return specs;
 }

@@ -37,6 +37,7 @@ struct WheelState {
   double driving_torque = 0.0;   // what turns it against the gravel (minus the gravel's moment about +y)
   double load = 0.0, speed = 0.0, spin = 0.0;  // the schedule's values now
   double bed_level = 0.0, bed_highest = 0.0;   // under the footprint when it was set down
+  double tread_low = 0.0;        // the tread's lowest point (rigid wheel: R below the centre; a tyre: its surface)
 };
 
 // Where the wheel was set down. Four doubles in this order: the bytes of the checkpoint entry
@@ -47,6 +48,21 @@ struct WheelPlacement {
   double bed_level = 0.0;    // the bed's mean level under its footprint then (BedLevel::mean)
   double bed_highest = 0.0;  // the highest sphere under it then (BedLevel::highest)
 };
+
+// The bed under a wheel of `spec` at its x_start (dem/wheel.hpp bed_level) from the spheres' current positions.
+template <class T>
+BedLevel bed_under(const SphereSet<T>& s, const WheelSpec& spec) {
+  auto x0 = Kokkos::create_mirror_view_and_copy(HostSpace(), s.x0);
+  auto u = Kokkos::create_mirror_view_and_copy(HostSpace(), s.u);
+  auto r = Kokkos::create_mirror_view_and_copy(HostSpace(), s.radius);
+  std::vector<std::array<double, 4>> rows(static_cast<std::size_t>(s.size()));
+  double r_max = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i] = {double(x0(i, 0) + u(i, 0)), double(x0(i, 1) + u(i, 1)), double(x0(i, 2) + u(i, 2)), double(r(i))};
+    r_max = std::max(r_max, rows[i][3]);
+  }
+  return bed_level(rows, spec, r_max);
+}
 
 template <class T>
 class WheelDrive {
@@ -144,6 +160,7 @@ class WheelDrive {
     for (int k = 0; k < 3; ++k) w.centre[k] = b.position[k];
     w.bed_level = at.bed_level;
     w.bed_highest = at.bed_highest;
+    w.tread_low = b.position[2] - spec_.radius;
     if (!w.placed) return w;
     w.sinkage = w.bed_level - (b.position[2] - spec_.radius);
     w.vertical_force = contact_[2];
@@ -167,16 +184,7 @@ class WheelDrive {
   static double time_of(std::int64_t step, double dt) { return static_cast<double>(step) * dt; }
   // Its lowest point on the highest sphere under its footprint (dem/wheel.hpp bed_level), at rest.
   void set_down(double time, const SphereSet<T>& s) {
-    auto x0 = Kokkos::create_mirror_view_and_copy(HostSpace(), s.x0);
-    auto u = Kokkos::create_mirror_view_and_copy(HostSpace(), s.u);
-    auto r = Kokkos::create_mirror_view_and_copy(HostSpace(), s.radius);
-    std::vector<std::array<double, 4>> rows(static_cast<std::size_t>(s.size()));
-    double r_max = 0;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      rows[i] = {double(x0(i, 0) + u(i, 0)), double(x0(i, 1) + u(i, 1)), double(x0(i, 2) + u(i, 2)), double(r(i))};
-      r_max = std::max(r_max, rows[i][3]);
-    }
-    const BedLevel level = bed_level(rows, spec_, r_max);
+    const BedLevel level = bed_under(s, spec_);
     auto& b = body_(0);
     b = rigid::RigidBody<3>();
     b.mass = spec_.mass;

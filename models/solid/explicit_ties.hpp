@@ -17,6 +17,7 @@
 // (drive_force: M_b A - F along it), as the tyre's tractive force and torque are.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -114,7 +115,25 @@ inline void HyperelasticExplicit<T, D>::body_force(std::size_t k, double t) {
     const auto& l = ties_[k].load[static_cast<std::size_t>(q)];
     if (l && !ties_[k].velocity[static_cast<std::size_t>(q)]) F[static_cast<std::size_t>(q)] += l(t);
   }
+  if (static_cast<int>(k) == o_.damping_frame && o_.damping > 0.0)  // the dashpots' reaction (frame_damping)
+    for (int q = 0; q <= D; ++q) F[static_cast<std::size_t>(q)] += frame_force_[q];
   s.force = F;
+}
+
+// The damping relative to the frame body's rigid motion: its velocity (the half-step one of a free DoF, the
+// prescribed one otherwise) and angular velocity omega n at its current pose (3D).
+template <class T, int D>
+inline void HyperelasticExplicit<T, D>::frame_damping() {
+  const std::size_t k = static_cast<std::size_t>(o_.damping_frame);
+  const TieState<D>& s = state_[k];
+  DampingFrame f;
+  for (int d = 0; d < D; ++d) {
+    f.c[d] = s.position[static_cast<std::size_t>(d)];
+    f.V[d] = s.velocity[static_cast<std::size_t>(d)];
+    f.n[d] = body_[k].axis[static_cast<std::size_t>(d)];
+    f.w[d] = s.omega * body_[k].axis[static_cast<std::size_t>(d)];
+  }
+  frame_force_ = explicit_frame_damping<T>(solid_.discretization().nodes, kind_, coordinates_, u_, v_, mass_, o_.damping, f, r_, frame_partials_);
 }
 
 // The bodies of the ties: their nodes, mass, centre of mass, inertia about the axis and the tied offsets.
@@ -126,7 +145,13 @@ inline void HyperelasticExplicit<T, D>::set_up_ties() {
     Body b;
     if (!(tie.mass >= 0.0) || !(tie.inertia >= 0.0))
       throw std::invalid_argument("solid::HyperelasticExplicit: rigid tie '" + tie.boundary + "': mass and inertia must be >= 0");
-    b.nodes = side_nodes(solid_.discretization(), tie.boundary);
+    // the nodes of one side, or of several joined by '+' (the tyre's rim: "ymin+ymax", both beads on one body)
+    for (std::size_t from = 0; from <= tie.boundary.size();) {
+      const std::size_t to = std::min(tie.boundary.find('+', from), tie.boundary.size());
+      for (const std::int64_t v : side_nodes(solid_.discretization(), tie.boundary.substr(from, to - from)))
+        if (std::find(b.nodes.begin(), b.nodes.end(), v) == b.nodes.end()) b.nodes.push_back(v);
+      from = to + 1;
+    }
     if (b.nodes.empty()) throw std::invalid_argument("solid::HyperelasticExplicit: rigid tie '" + tie.boundary + "' has no nodes");
     if (D == 3) {
       const double nn = std::sqrt(tie.axis[0] * tie.axis[0] + tie.axis[1] * tie.axis[1] + tie.axis[2] * tie.axis[2]);

@@ -34,6 +34,8 @@ struct ExplicitFiniteStrainOptions {
   double dt = 0.0;               // 0: safety x dt_crit of the initial state
   double safety = 0.9;
   double damping = 0.0;          // alpha: mass-proportional damping of the free nodes (1/s)
+  int damping_frame = -1;        // >= 0: the damping acts on the velocity relative to tie k's rigid motion, its
+                                 // reaction on that body (a rolling tyre's rigid motion with its rim undamped)
   bool allow_unstable = false;   // accept dt > safety x dt_crit (to show the instability)
   int power_iterations = 300;
   double power_tolerance = 1e-4;
@@ -48,6 +50,10 @@ class HyperelasticExplicit {
       : solid_(c, law, pressures), o_(o), ties_(ties) {
     if (!(o.density > 0.0)) throw std::invalid_argument("solid::HyperelasticExplicit: density must be > 0");
     if (!(o.damping >= 0.0)) throw std::invalid_argument("solid::HyperelasticExplicit: damping must be >= 0");
+    if (o.damping_frame >= static_cast<int>(ties.size()))
+      throw std::invalid_argument("solid::HyperelasticExplicit: damping_frame " + std::to_string(o.damping_frame) + " names no tie (" +
+                                  std::to_string(ties.size()) + " ties)");
+    if (o.damping_frame >= 0 && D != 3) throw std::invalid_argument("solid::HyperelasticExplicit: damping_frame is for 3D solids");
     if (!(o.safety > 0.0 && o.safety <= 1.0)) throw std::invalid_argument("solid::HyperelasticExplicit: safety must be in (0, 1]");
     if (o.dt < 0.0 || !std::isfinite(o.dt)) throw std::invalid_argument("solid::HyperelasticExplicit: dt must be >= 0 (0: automatic)");
     const Index n = solid_.dof_count();
@@ -64,6 +70,7 @@ class HyperelasticExplicit {
     for (std::size_t i = 0; i < mask.size(); ++i) kind_host_[i] = mask[i] ? 1 : 0;
     g_scaled_ = View1<T>("polymech::solid::fse_dirichlet", solid_.dirichlet_values().extent(0));
     set_up_ties();
+    if (o.damping_frame >= 0) coordinates_ = models::to_device<double>("polymech::solid::fse_coordinates", solid_.discretization().coordinates);
     kind_ = models::to_device<char>("polymech::solid::fse_kind", kind_host_);
     start();
     dt_crit_ = estimate_critical_step();
@@ -78,6 +85,7 @@ class HyperelasticExplicit {
   }
 
   Hyperelastic<T, D>& solid() { return solid_; }
+  Index dof_count() const { return static_cast<Index>(u_.extent(0)); }
   double time() const { return t_; }
   std::int64_t steps() const { return steps_; }
   double time_step() const { return dt_; }
@@ -87,6 +95,7 @@ class HyperelasticExplicit {
   const View1<T>& displacement() const { return u_; }
   const View1<T>& velocity() const { return v_; }
   const View1<T>& lumped_mass() const { return mass_; }
+  const View1<T>& acceleration_view() const { return a_; }
   const std::vector<TieState<D>>& ties() const { return state_; }
   double tie_mass(std::size_t k) const { return body_[k].mass; }
   double tie_inertia(std::size_t k) const { return body_[k].inertia; }
@@ -96,6 +105,13 @@ class HyperelasticExplicit {
   // accelerations and, on tied nodes, the bodies. Not part of the critical-step estimate.
   using ExternalForce = std::function<void(double, const View1<T>&, const View1<T>&, const View1<T>&)>;
   void set_external_force(ExternalForce f) { external_ = std::move(f); }
+  // A new time step (a coupling's common step), refused above safety x the critical step unless allow_unstable.
+  void set_time_step(double dt) {
+    if (!(dt > 0.0) || (dt > o_.safety * dt_crit_ * (1.0 + 1e-12) && !o_.allow_unstable))
+      throw std::invalid_argument("solid::HyperelasticExplicit: time step " + models::format_g(dt) + " is not in (0, safety x the critical step " +
+                                  models::format_g(o_.safety * dt_crit_) + "]");
+    dt_ = dt;
+  }
   // The mass-proportional damping from now on (the tyre: settle the inflation, then press on a plate).
   void set_damping(double alpha) {
     if (!(alpha >= 0.0)) throw std::invalid_argument("solid::HyperelasticExplicit: damping must be >= 0");
@@ -130,7 +146,15 @@ class HyperelasticExplicit {
 
   // One step t -> t + dt. Throws std::runtime_error (with the time and the reason) when the state stops evaluating.
   void step() {
-    const double t0 = t_, t1 = t0 + dt_, h = 0.5 * dt_;
+    first_half();
+    second_half();
+  }
+  // The step in its two halves, for a coupling that computes the external forces at t + dt between them (the
+  // DEM's contacts on the tyre, models/dem/tyre_drive.hpp): first_half() kicks the free nodes and the bodies by
+  // dt/2 and drifts them to t + dt (displacements at t + dt, velocities at the half step); second_half()
+  // evaluates the forces at t + dt (the external force included) and takes the second kick.
+  void first_half() {
+    const double t0 = t_, h = 0.5 * dt_;
     const Index n = solid_.dof_count();
     explicit_kick_drift(n, kind_, u_, v_, a_, static_cast<T>(h), static_cast<T>(dt_));  // the free nodes: kick and drift
     for (std::size_t k = 0; k < ties_.size(); ++k) {  // the bodies: kick (or prescribe) and drift
@@ -144,6 +168,10 @@ class HyperelasticExplicit {
       s.angle += dt_ * s.omega;
       place_tied(k, false);
     }
+  }
+  void second_half() {
+    const double t1 = t_ + dt_, h = 0.5 * dt_;
+    const Index n = solid_.dof_count();
     evaluate(t1);
     explicit_kick(n, kind_, v_, a_, static_cast<T>(h));  // the free nodes: second kick
     for (std::size_t k = 0; k < ties_.size(); ++k) {
@@ -158,6 +186,16 @@ class HyperelasticExplicit {
     }
     t_ = t1;
     ++steps_;
+  }
+
+  // After u, v and a were written back (a checkpoint): the clock and the bodies' states (the tied nodes' u and v
+  // are part of the Views already).
+  void restore(double t, std::int64_t steps, const std::vector<TieState<D>>& ties) {
+    if (ties.size() != ties_.size()) throw std::invalid_argument("solid::HyperelasticExplicit::restore: " + std::to_string(ties.size()) +
+                                                                 " body states for " + std::to_string(ties_.size()) + " ties");
+    t_ = t;
+    steps_ = steps;
+    state_ = ties;
   }
 
   void advance(std::int64_t steps) {
@@ -206,6 +244,9 @@ class HyperelasticExplicit {
 
   // The largest eigenvalue of M_L^-1 K_t (explicit_stability.hpp).
   double largest_eigenvalue();
+  // The damping relative to the frame body's rigid motion (ExplicitFiniteStrainOptions::damping_frame), its
+  // reaction kept for body_force (explicit_ties.hpp).
+  void frame_damping();
 
   // r(u, s(t)) with u carrying the Dirichlet values s(t) g; a = -r / m - alpha v on the free DoFs; the bodies'
   // forces (structure + applied loads).
@@ -223,7 +264,9 @@ class HyperelasticExplicit {
                                models::format_g(dt_) + " is unstable here (critical step at the start " +
                                models::format_g(dt_crit_) + ") or the load is too large");
     if (external_) external_(t, u_, v_, r_);
-    explicit_accelerate(solid_.dof_count(), kind_, r_, mass_, v_, static_cast<T>(o_.damping), a_);
+    const bool framed = o_.damping_frame >= 0 && o_.damping > 0.0;
+    if (framed) frame_damping();
+    explicit_accelerate(solid_.dof_count(), kind_, r_, mass_, v_, static_cast<T>(framed ? 0.0 : o_.damping), a_);
     for (std::size_t k = 0; k < ties_.size(); ++k) body_force(k, t);
   }
 
@@ -234,6 +277,9 @@ class HyperelasticExplicit {
   ExplicitFiniteStrainOptions o_;
   std::vector<RigidTie<D>> ties_;
   std::vector<Body> body_;
+  View1<double> coordinates_;            // X on the device (only with a damping frame)
+  particles::SumPartials frame_partials_;
+  Kokkos::Array<double, 4> frame_force_{};  // the frame damping's force and moment on its body (last evaluation)
   std::vector<TieState<D>> state_;
   ExternalForce external_;
   View1<T> u_, v_, a_, r_, work_, mass_, g_scaled_;

@@ -145,3 +145,119 @@ TEST(Wheel, DrivenAtTheScheduleWithSlipAndRestartedBitForBit) {
   // (the sign of the traction is not asserted here: one layer of free spheres rolls under the tread;
   // the kernel test SphereFacet.AMovingSurfaceDragsSpheresAndFeelsTheirReaction checks the drag)
 }
+
+namespace {
+
+// The deformable tyre (effect fe_tyre, issue 37): the paper's tyre 37x12.5R16.5 on a coarse lattice (16 x 6 x 1
+// order-1 cells: 672 DoFs) on one layer of 20 mm spheres (15 x 10) on the floor of a box, set down at once,
+// inflated to 0.35 MPa over 5 ms, loaded with the paper's 10 163 N from 5 ms to `load_to`; a light rim (10 kg).
+dm::Config tyre_on_a_layer(double speed, double load_to) {
+  dm::Config c;
+  c.particle = {5e7, 0.3, 2650};
+  c.wall = {5e7, 0.3, 2650};
+  c.restitution = 0.4;
+  c.friction = 0.5;
+  c.gravity = {0, 0, -9.81};
+  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces", "fe_tyre"}, dm::effect_table());
+  const double r = 0.02, lx = 0.6, ly = 0.4;
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 15; ++i) {
+      dm::SphereInit s;
+      s.radius = r;
+      s.position = {r + 2 * r * i, r + 2 * r * j, r};
+      c.spheres.push_back(s);
+    }
+  c.planes = dm::box_planes(lx, ly);
+  auto& w = c.wheel;
+  w.radius = 0.445;
+  w.width = 0.31;
+  w.mass = 10.0;
+  w.load = 10163.0;
+  w.load_from = 0.005;
+  w.load_to = load_to;
+  w.speed = speed;
+  w.speed_from = load_to;
+  w.speed_to = load_to + 0.003;
+  w.slip = 0.2;
+  w.start = 0.0;
+  w.x_start = 0.2;
+  w.y_centre = 0.2;
+  w.parked = {0.2, 0.2, 2.0};
+  c.tyre.around = 16;
+  c.tyre.across = 6;
+  c.tyre.through = 1;
+  c.tyre.order = 1;
+  c.tyre.inflate_to = 0.005;
+  c.max_speed = 1.0;
+  return c;
+}
+
+}  // namespace
+
+// Standing on the layer, the tyre carries the load: over a window of steps the tyre's vertical momentum (nodes
+// and rim) changes by exactly the impulse of the gravel's force on its surface nodes less the rim's load (the
+// velocity Verlet's trapezoidal sum; the damping acts between the nodes and the rim and cancels), so the mean
+// force is the load up to that change; the tyre flattens by centimetres, and no sphere passes through the tread
+// (the layer stays one layer: the hard case of full load on a single layer).
+TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) {
+  // loaded slowly (5-100 ms: the rim bounces on the tyre with a period of about 60 ms)
+  dm::Dem<double> m(tyre_on_a_layer(0.0, 0.100));
+  ASSERT_TRUE(m.tyre().enabled());
+  const auto steps = [&](double t) { return static_cast<std::int64_t>(std::llround(t / m.dt())); };
+  pm::models::run(m, steps(0.005));  // inflated, not loaded yet: its radius
+  const double inflated = m.wheel().centre[2] - m.wheel().tread_low;
+  pm::models::run(m, steps(0.125));
+  const int n = steps(0.02);
+  const double p0 = m.tyre().solid().momentum()[2];
+  double impulse = 0.5 * (m.wheel().vertical_force - m.wheel().load), fz = 0.0;
+  for (int k = 1; k <= n; ++k) {
+    pm::models::run(m, 1);
+    const auto w = m.wheel();
+    impulse += (k == n ? 0.5 : 1.0) * (w.vertical_force - w.load);
+    fz += w.vertical_force / n;
+  }
+  impulse *= m.dt();
+  const double dp = m.tyre().solid().momentum()[2] - p0;
+  const auto w = m.wheel();
+  const double deflection = inflated - (w.centre[2] - w.tread_low);
+  std::printf("tyre on a layer: dt %.3g s, mean vertical force %.1f N (load 10163), momentum change %.6g N s, impulse %.6g N s, "
+              "rim sinkage %.2f mm, tread sinkage %.2f mm, inflated radius %.4f m, deflection %.2f mm\n",
+              m.dt(), fz, dp, impulse, 1e3 * w.sinkage, 1e3 * (w.bed_level - w.tread_low), inflated, 1e3 * deflection);
+  EXPECT_NEAR(dp, impulse, 1e-9 * 10163.0 * n * m.dt());
+  EXPECT_NEAR(fz, 10163.0 + dp / (n * m.dt()), 0.01 * 10163.0);  // the mean, up to the end points' trapezoid halves
+  EXPECT_NEAR(fz, 10163.0, 0.3 * 10163.0);                       // the rim's bounce: +-20 % here
+  EXPECT_GT(inflated, 0.445);   // inflation grows it (3 % on the fine mesh, docs/VALIDATION.md)
+  EXPECT_GT(deflection, 0.005); // the tyre's deflection under the load: centimetres (27 mm on a plate)
+  EXPECT_LT(deflection, 0.06);
+  for (pm::Index i = 0; i < m.sphere_count(); ++i) ASSERT_LT(m.sphere(i).x[2], 0.03) << "sphere " << i << " left the layer";
+}
+
+// Driven (0.5 m/s, 20 % slip) and restarted mid-drive from a checkpoint: the tyre (its displacement, velocity,
+// acceleration, rim and clock) is part of it, so the run continues bit for bit; the rim follows the schedule.
+TEST(Tyre, DrivenAndRestartedBitForBit) {
+  const dm::Config c = tyre_on_a_layer(0.5, 0.007);
+  dm::Dem<double> whole(c);
+  const auto first = static_cast<std::int64_t>(0.012 / whole.dt()), second = static_cast<std::int64_t>(0.004 / whole.dt());
+  pm::models::run(whole, first);
+  pm::models::Archive a;
+  whole.save(a, "dem/");
+  dm::Dem<double> restarted(c);
+  restarted.load(a, "dem/");
+  pm::models::run(whole, second);
+  pm::models::run(restarted, second);
+  const auto w = whole.wheel(), v = restarted.wheel();
+  EXPECT_EQ(std::memcmp(w.centre, v.centre, sizeof w.centre), 0);
+  EXPECT_EQ(w.vertical_force, v.vertical_force);
+  EXPECT_EQ(w.tractive_force, v.tractive_force);
+  EXPECT_GT(w.vertical_force, 0.0);
+  const auto uw = pm::models::to_host(whole.tyre().solid().displacement()), ur = pm::models::to_host(restarted.tyre().solid().displacement());
+  ASSERT_EQ(uw.size(), ur.size());
+  EXPECT_EQ(std::memcmp(uw.data(), ur.data(), uw.size() * sizeof(double)), 0);
+  for (pm::Index i = 0; i < whole.sphere_count(); ++i) {
+    const auto p = whole.sphere(i), q = restarted.sphere(i);
+    ASSERT_EQ(std::memcmp(&p, &q, sizeof p), 0) << "sphere " << i;
+  }
+  // the prescribed travel: 0.5 m/s ramped over 7-10 ms (mid-step speeds: exact for a ramp), from x = 0.2
+  EXPECT_NEAR(w.centre[0], 0.2 + 0.5 * (w.time - 0.0085), 1e-7);  // the ramp's kinks fall inside steps
+  EXPECT_NEAR(w.spin, 0.5 / (0.8 * 0.445), 1e-12);
+}
