@@ -33,6 +33,8 @@ APPS = {
     "isph": ("isph", lambda s: True),
     "efg": ("efg", lambda s: True),
     "helmholtz": ("helmholtz", lambda s: True),
+    "turek_hron": ("flow", lambda s: True),
+    "micro_cantilever": ("solid", lambda s: True),
 }
 
 

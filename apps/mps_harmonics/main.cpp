@@ -6,12 +6,14 @@
 // [crack].normal_reaction_ratio sets the slip model's fixed normal reaction from it (§5.2.2: 0.75 x).
 // Writes time_history.csv, spectrum.csv, contact_states.csv, summary.json, fields.h5/.xdmf (cracked run).
 // Checkpoints and --restart as in apps/common/restart.hpp: a restart continues inside whichever of the
-// two runs was going (the cracked run's checkpoints carry the intact run's record).
+// two runs was going (the cracked run's checkpoints carry the intact run's record). The summary keys:
+// apps/mps_harmonics/summary.hpp.
 #include <cstdio>
 #include <memory>
 #include <utility>
 
 #include "apps/common/case.hpp"
+#include "apps/mps_harmonics/summary.hpp"
 #include "io/mps_elastic_scene.hpp"
 #include "io/progress.hpp"
 #include "mps_elastic/analysis.hpp"
@@ -89,40 +91,7 @@ int run_case(const pm::io::MpsElasticScene& scene, const pm::apps::CommonOptions
   if (!xdmf.empty()) files.insert(files.end(), {"fields.h5", xdmf});
 
   nlohmann::json j = cs.summary();
-  j["spacing"] = c.spacing;
-  j["dt"] = c.dt;
-  j["steps"] = c.steps;
-  j["particles"] = b.particles;
-  j["bonds_crack"] = b.bonds;
-  j["bonds_intact"] = a.bonds;
-  j["crack_pairs"] = b.pairs;
-  j["k_prime"] = c.crack.k_prime;
-  j["drive_frequency"] = res.f0;
-  j["probe"] = scene.harmonics_probe;
-  j["component"] = comp;
-  j["harmonics"] = {1, 2, 3, 4, 5};
-  if (!analysed) j["analysis_error"] = res.analysis_error;
-  j["ratios_crack"] = analysed ? nlohmann::json(res.ratios_crack) : nlohmann::json(nullptr);
-  j["ratios_intact"] = analysed ? nlohmann::json(res.ratios_intact) : nlohmann::json(nullptr);
-  j["ratios_method"] = me::ratios_method;
-  j["window_start"] = analysed ? nlohmann::json(res.window_start) : nlohmann::json(nullptr);
-  j["spectrum_ratios_crack"] = analysed ? nlohmann::json(res.spectrum_ratios_crack) : nlohmann::json(nullptr);
-  j["spectrum_ratios_intact"] = analysed ? nlohmann::json(res.spectrum_ratios_intact) : nlohmann::json(nullptr);
-  // the same ratios at every probe (how the harmonics fade with the distance from the crack)
-  nlohmann::json per_probe = nlohmann::json::object();
-  for (const auto& p : me::probe_ratios(res, field))
-    per_probe[p.name] = p.measured ? nlohmann::json{{"ratios_crack", p.crack}, {"ratios_intact", p.intact}, {"window_start", p.window_start}}
-                                   : nlohmann::json{{"note", p.note}};
-  j["probes"] = per_probe;
-  j["max_shear_force_intact"] = a.max_shear_force;
-  j["normal_reaction"] = res.normal_reaction;
-  j["normal_reaction_ratio"] = scene.normal_reaction_ratio;
-  j["wall_seconds_intact"] = a.stats.wall_seconds;
-  j["wall_seconds_crack"] = b.stats.wall_seconds;
-  j["wall_seconds"] = a.stats.wall_seconds + b.stats.wall_seconds;
-  j["restarts"] = a.stats.restarts + b.stats.restarts;
-  pm::apps::put_subnormal_census(j, a.stats, "subnormal_census_intact");
-  pm::apps::put_subnormal_census(j, b.stats, "subnormal_census_crack");
+  pm::apps::put_harmonics_summary(j, scene, res, field);
   cs.finish(j, files);
 
   if (!analysed) {
