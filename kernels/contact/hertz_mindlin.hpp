@@ -80,6 +80,17 @@ struct ContactForce {
   T normal;  // F_n (>= 0)
 };
 
+// sqrt(4 G* / E*) = sqrt(S_t / S_n), a constant of the law (0 for E* = 0): a kernel over many contacts
+// takes it once and passes it to the overload below (a division and a square root less per contact).
+template <class T>
+KOKKOS_INLINE_FUNCTION T shear_root_ratio(const HertzMindlin<T>& p) {
+  return p.e_star > T(0) ? kx::sqrt(T(4) * p.g_star / p.e_star) : T(0);
+}
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T root_ratio, T r_star, T m_star,
+                                                           T delta, const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
+                                                           T dt, Vec3<T>& xi);
+
 // The force on sphere i of one contact (eqs. (11)-(14)); updates the tangential spring xi when
 // `friction` (with the step dt). r_star, m_star: of this pair.
 // Cost (the DEM step's hottest function, docs/PERFORMANCE.md "DEM: the step against LIGGGHTS"): a
@@ -89,6 +100,13 @@ struct ContactForce {
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T r_star, T m_star, T delta,
                                                            const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
+                                                           T dt, Vec3<T>& xi) {
+  return hertz_mindlin_force(p, shear_root_ratio(p), r_star, m_star, delta, n, v_rel, friction, dt, xi);
+}
+// The same with root_ratio = shear_root_ratio(p) given (the same bits).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T root_ratio, T r_star, T m_star,
+                                                           T delta, const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
                                                            T dt, Vec3<T>& xi) {
   ContactForce<T> out;
   const T a = kx::sqrt(r_star * delta);
@@ -112,7 +130,7 @@ KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindl
   }
   xi += dt * v_t;
   const T s_t = T(8) * p.g_star * a;
-  const T root_t = p.e_star > T(0) ? root_n * kx::sqrt(T(4) * p.g_star / p.e_star) : T(0);  // sqrt(S_t m*)
+  const T root_t = root_n * root_ratio;  // sqrt(S_t m*)
   Vec3<T> f_t = -s_t * xi - damp * root_t * v_t;  // eq. (13)
   const T ft2 = norm2(f_t), limit = p.mu * f_n;
   if (ft2 > limit * limit) {  // eq. (14): Coulomb slip; the spring keeps what the limit allows

@@ -75,9 +75,10 @@ namespace detail {
 // Sphere i (centre x, radius r, mass m, velocity v, spin w) against the planes near it, one-sided: a
 // sphere whose centre is less than r behind a plane is pushed out along its normal (R* = r, m* = m, lever
 // r); the forces and torques are added to f_sum, t_sum.
+// root_ratio: contact::shear_root_ratio(pc.law), taken once by the caller.
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Index i, const Vec3<T>& x, T r, T m, const Vec3<T>& v,
-                                                const Vec3<T>& w, bool friction, T dt, Vec3<T>& f_sum, Vec3<T>& t_sum) {
+                                                const Vec3<T>& w, bool friction, T dt, T root_ratio, Vec3<T>& f_sum, Vec3<T>& t_sum) {
   const Index np = static_cast<Index>(pc.planes.extent(0));
   const std::uint32_t bits = pc.near.extent(0) == 0 ? ~std::uint32_t(0) : pc.near(i);
   if (bits == 0) return;
@@ -95,7 +96,7 @@ KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Inde
     }
     const Vec3<T> v_rel = v + cross(w, (-r) * n);
     Vec3<T> xi = spring(pc.hist, k, friction);
-    const auto c = hertz_mindlin_force(law, r, m, delta, n, v_rel, friction, dt, xi);
+    const auto c = hertz_mindlin_force(law, root_ratio, r, m, delta, n, v_rel, friction, dt, xi);
     if (friction) store<3>(pc.hist, k, xi);
     f_sum += c.force;
     t_sum -= r * cross(n, c.force);
@@ -117,12 +118,14 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
                         const PlaneContacts<T>& planes = PlaneContacts<T>()) {
   const bool clumped = s.body.extent(0) > 0;
   const bool walls = planes.planes.extent(0) > 0;
+  // sqrt(4 G* / E*) of both laws once, not per contact (contact::shear_root_ratio; the same bits)
+  const T root_pp = contact::shear_root_ratio(p), root_pw = walls ? contact::shear_root_ratio(planes.law) : T(0);
   Kokkos::parallel_for(
       "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         // the law and dt as locals: the captured copies are doubles in the closure, which the stores to
         // hist and pair_load may alias for the compiler (it would load them again after every store)
         const HertzMindlin<T> law = p;
-        const T h = dt;
+        const T h = dt, root_ratio = root_pp;
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
         const int body_i = clumped ? s.body(i) : -1;
@@ -147,7 +150,7 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
           const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
           const T mj = s.mass(j);
           Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(law, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, h, xi);
+          const auto c = hertz_mindlin_force(law, root_ratio, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, h, xi);
           if (friction) store<3>(hist, k, xi);
           const Vec3<T> nxf = cross(n, c.force);
           f_sum += c.force;
@@ -157,7 +160,7 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
             pair_load(k, 3 + q) = -lj * nxf[q];
           }
         }
-        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, h, f_sum, t_sum);
+        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, h, root_pw, f_sum, t_sum);
         const T inv_inertia = T(2.5) / (mi * ri * ri);
         for (int q = 0; q < 3; ++q) {
           s.a(i, q) += f_sum[q] / mi;
@@ -245,11 +248,12 @@ template <class T>
 void sphere_plane_forces(const SphereSet<T>& s, const PlaneView<T>& planes, const SpringView<T>& hist,
                          const HertzMindlin<T>& p, bool friction, T dt, const PlaneMask& near = PlaneMask()) {
   const PlaneContacts<T> pc{planes, hist, near, p};
+  const T root_ratio = contact::shear_root_ratio(p);
   Kokkos::parallel_for(
       "polymech::dem::sphere_plane", range(s.size()), KOKKOS_LAMBDA(const Index i) {
         const T ri = s.radius(i), mi = s.mass(i);
         Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
-        detail::plane_contacts(pc, i, load<3>(s.x, i), ri, mi, load<3>(s.v, i), load<3>(s.omega, i), friction, dt, f_sum, t_sum);
+        detail::plane_contacts(pc, i, load<3>(s.x, i), ri, mi, load<3>(s.v, i), load<3>(s.omega, i), friction, dt, root_ratio, f_sum, t_sum);
         const T inv_inertia = T(2.5) / (mi * ri * ri);
         for (int q = 0; q < 3; ++q) {
           s.a(i, q) += f_sum[q] / mi;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 #include "particles/particle_set.hpp"
 
@@ -83,39 +84,49 @@ void kick_drift(const SphereSet<T>& s, T h, T dt) {
 // over the spheres (a step of spheres without clumps: nothing moves them between the two): v += h a,
 // omega += h alpha, u += dt v, x = x0 + u, a = g, alpha = 0; returns the largest |x - x_build| (the Verlet
 // list's displacement check, neighbors::max_displacement's value bit for bit; 0 for an empty x_build).
+// On a host, each call of kick_drift_start's body takes a block of spheres and keeps its running maximum
+// in a register (one sphere per call kept it in memory: a store and a load each sphere); on a GPU, one.
+inline constexpr Index kick_drift_block = std::is_same<MemSpace, HostSpace>::value ? 16 : 1;
 template <class T>
 T kick_drift_start(const SphereSet<T>& s, T h, T dt, const Vec3<T>& g, const VecView<T, 3>& x_build) {
   const auto u = s.u, v = s.v, a = s.a, omega = s.omega, alpha = s.alpha, x = s.x, x0 = s.x0;
   const bool check = x_build.extent(0) == static_cast<std::size_t>(s.size());
+  const Index n = s.size();
+  const Index block = kick_drift_block;
   T m2 = T(0);
   Kokkos::parallel_reduce(
-      "polymech::dem::kick_drift", range(s.size()),
-      KOKKOS_LAMBDA(const Index i, T& m) {
-        // whole spheres in registers: every View is read once and written once (the Views may alias for
-        // the compiler, so a component written and read again would be loaded again)
-        Vec3<T> vi = load<3>(v, i), wi = load<3>(omega, i), ui = load<3>(u, i), xi;
-        const Vec3<T> ai = load<3>(a, i), alphai = load<3>(alpha, i), x0i = load<3>(x0, i);
-        for (int k = 0; k < 3; ++k) {
-          vi[k] += h * ai[k];
-          wi[k] += h * alphai[k];
-          ui[k] += dt * vi[k];
-          xi[k] = x0i[k] + ui[k];
-        }
-        store<3>(v, i, vi);
-        store<3>(omega, i, wi);
-        store<3>(u, i, ui);
-        store<3>(x, i, xi);
-        store<3>(a, i, g);
-        store<3>(alpha, i, Vec3<T>::zero());
-        if (check) {
-          const Vec3<T> xb = load<3>(x_build, i);
-          T d2 = T(0);
+      "polymech::dem::kick_drift", range((n + block - 1) / block),
+      KOKKOS_LAMBDA(const Index b, T& m) {
+        T mb = m;
+        const Index end = (b + 1) * block < n ? (b + 1) * block : n;
+        for (Index i = b * block; i < end; ++i) {
+          // whole spheres in registers: every View is read once and written once (the Views may alias for
+          // the compiler, so a component written and read again would be loaded again)
+          Vec3<T> vi = load<3>(v, i), wi = load<3>(omega, i), ui = load<3>(u, i), xi;
+          const Vec3<T> ai = load<3>(a, i), alphai = load<3>(alpha, i), x0i = load<3>(x0, i);
           for (int k = 0; k < 3; ++k) {
-            const T d = xi[k] - xb[k];
-            d2 += d * d;
+            vi[k] += h * ai[k];
+            wi[k] += h * alphai[k];
+            ui[k] += dt * vi[k];
+            xi[k] = x0i[k] + ui[k];
           }
-          m = d2 > m ? d2 : m;
+          store<3>(v, i, vi);
+          store<3>(omega, i, wi);
+          store<3>(u, i, ui);
+          store<3>(x, i, xi);
+          store<3>(a, i, g);
+          store<3>(alpha, i, Vec3<T>::zero());
+          if (check) {
+            const Vec3<T> xb = load<3>(x_build, i);
+            T d2 = T(0);
+            for (int k = 0; k < 3; ++k) {
+              const T d = xi[k] - xb[k];
+              d2 += d * d;
+            }
+            mb = d2 > mb ? d2 : mb;
+          }
         }
+        m = mb;
       },
       Kokkos::Max<T>(m2));
   return kx::sqrt(m2);
