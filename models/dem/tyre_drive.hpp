@@ -141,14 +141,7 @@ class TyreDrive {
     w.bed_level = r.placement.bed_level;
     w.bed_highest = r.placement.bed_highest;
     w.tread_low = lowest_tread();
-    if (!w.placed) return w;
-    w.sinkage = w.bed_level - (w.centre[2] - spec_.radius);
-    w.vertical_force = contact_[2];
-    w.tractive_force = contact_[0];
-    w.driving_torque = -contact_[4];
-    w.load = spec_.load_at(w.time);
-    w.speed = spec_.speed_at(w.time);
-    w.spin = spec_.spin_at(w.time);
+    if (w.placed) set_down_state(w, spec_, contact_);
     return w;
   }
 

@@ -49,6 +49,18 @@ struct WheelPlacement {
   double bed_highest = 0.0;  // the highest sphere under it then (BedLevel::highest)
 };
 
+// A set-down wheel's (or tyre's) rim sinkage (the bed's level less its centre's height less R), the spheres' force
+// and moment on it (contact: force, moment about its centre) and the schedule's values at w.time.
+inline void set_down_state(WheelState& w, const WheelSpec& spec, const std::array<double, 6>& contact) {
+  w.sinkage = w.bed_level - (w.centre[2] - spec.radius);
+  w.vertical_force = contact[2];
+  w.tractive_force = contact[0];
+  w.driving_torque = -contact[4];
+  w.load = spec.load_at(w.time);
+  w.speed = spec.speed_at(w.time);
+  w.spin = spec.spin_at(w.time);
+}
+
 // The bed under a wheel of `spec` at its x_start (dem/wheel.hpp bed_level) from the spheres' current positions.
 template <class T>
 BedLevel bed_under(const SphereSet<T>& s, const WheelSpec& spec) {
@@ -161,14 +173,7 @@ class WheelDrive {
     w.bed_level = at.bed_level;
     w.bed_highest = at.bed_highest;
     w.tread_low = b.position[2] - spec_.radius;
-    if (!w.placed) return w;
-    w.sinkage = w.bed_level - (b.position[2] - spec_.radius);
-    w.vertical_force = contact_[2];
-    w.tractive_force = contact_[0];
-    w.driving_torque = -contact_[4];
-    w.load = spec_.load_at(w.time);
-    w.speed = spec_.speed_at(w.time);
-    w.spin = spec_.spin_at(w.time);
+    if (w.placed) set_down_state(w, spec_, contact_);
     return w;
   }
 
