@@ -29,6 +29,7 @@ def row_of(summary, scale, seed, radius_min, radius_max, cpu):
     return {"scale": scale, "seed": seed, "radius_min": radius_min, "radius_max": radius_max,
             "clumps": summary["clumps"], "spheres": summary["spheres"], "dt": summary["dt"],
             "steps": summary["steps"], "sinkage_mm": summary["sinkage_mm"],
+            "tread_sinkage_mm": summary.get("tread_sinkage_mm", summary["sinkage_mm"]),
             "vertical_force": summary["vertical_force"], "tractive_force": summary["tractive_force"],
             "driving_torque": summary["driving_torque"], "packing_fraction": summary["packing_fraction"],
             "bed_height": summary["bed_height"], "cpu_seconds": cpu}
