@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "contact/facet_weights.hpp"
 #include "contact/sphere_facet.hpp"
 #include "dem/hertz_mindlin.hpp"
 #include "dem/spheres.hpp"
@@ -280,29 +281,53 @@ struct SurfaceMotion {
 template <class T>
 using WrenchView = Kokkos::View<T* [6], Kokkos::LayoutRight, MemSpace>;
 
+// Per listed sphere-facet entry of a deforming surface: the force on the surface (3) and the four corner
+// weights of the contact point (contact/facet_weights.hpp); row 7 unused.
+template <class T>
+using EntryLoadView = Kokkos::View<T* [8], Kokkos::LayoutRight, MemSpace>;
+
+// A surface whose nodes move independently (the FE tyre's, dem/surface_loads.hpp): the nodes' velocities, and
+// where each contact's force and weights go. Empty: a rigid surface.
+template <class T>
+struct DeformingSurface {
+  VecView<T, 3> node_velocity;
+  EntryLoadView<T> entry_load;
+};
+
 // Kernel "polymech::dem::sphere_facet": spheres against the facets of a surface mesh listed in `list`
 // (two-set: sphere i -> facet j), by the inside-outside algorithm with one force per touching feature
-// (contact/sphere_facet.hpp). R* = r and m* = m (a rigid surface, fixed or moving with `motion`: the
-// relative velocity of eqs. (12)-(15) is the sphere's surface point's less the facet's material
-// point's). With a non-empty `reaction`, row i gets what sphere i gives the surface (WrenchView).
+// (contact/sphere_facet.hpp). R* = r and m* = m; the relative velocity of eqs. (12)-(15) is the sphere's
+// surface point's less the facet's material point's: a rigid surface, fixed or moving with `motion`, or
+// (kernel "polymech::dem::sphere_deforming_facet", `deforming` given) sum_a w_a v_a from its nodes' velocities
+// with the contact point's corner weights, and then entry_load(k) gets the force on the surface and the weights
+// of listed entry k (zero for an entry not in contact). With a non-empty `reaction`, row i gets what sphere i
+// gives the (rigid) surface (WrenchView).
 template <class T>
 void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh, const neighbors::NeighborList& list,
                          const SpringView<T>& hist, const HertzMindlin<T>& p, bool friction, T dt,
-                         const SurfaceMotion<T>& motion = SurfaceMotion<T>(), const WrenchView<T>& reaction = WrenchView<T>()) {
+                         const SurfaceMotion<T>& motion = SurfaceMotion<T>(), const WrenchView<T>& reaction = WrenchView<T>(),
+                         const DeformingSurface<T>& deforming = DeformingSurface<T>()) {
   const bool react = reaction.extent(0) > 0;
+  const bool nodal = deforming.node_velocity.extent(0) > 0;
+  const auto node_velocity = deforming.node_velocity;
+  const auto entry_load = deforming.entry_load;
   Kokkos::parallel_for(
-      "polymech::dem::sphere_facet", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+      nodal ? "polymech::dem::sphere_deforming_facet" : "polymech::dem::sphere_facet", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
         const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
         const T ri = s.radius(i), mi = s.mass(i);
         Vec3<T> f_sum = Vec3<T>::zero(), m_sum = Vec3<T>::zero();
         contact::FacetContact<T> c[max_facets_per_sphere];
         Index facet[max_facets_per_sphere];
         const Offset begin = list.begin(i);
-        const int count = static_cast<int>(kx::min<Offset>(list.end(i) - begin, Offset(max_facets_per_sphere)));
+        const Offset listed = list.end(i) - begin;
+        const int count = static_cast<int>(kx::min<Offset>(listed, Offset(max_facets_per_sphere)));
         for (int m = 0; m < count; ++m) {
           facet[m] = list.neighbor(begin + m);
           c[m] = contact::sphere_facet_contact(mesh, facet[m], xi_pos, ri);
         }
+        if (nodal)  // beyond the row's capacity: no load
+          for (Offset k = begin + count; k < begin + listed; ++k)
+            for (int q = 0; q < 8; ++q) entry_load(k, q) = T(0);
         bool keep[max_facets_per_sphere];
         for (int m = 0; m < count; ++m) keep[m] = contact::keep_facet_contact(mesh, facet, c, count, m);
         // A touching feature dropped as a duplicate is the same contact as a kept one: its spring goes to
@@ -318,10 +343,21 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
           const Offset k = begin + m;
           if (!keep[m]) {
             if (friction) store<3>(hist, k, Vec3<T>::zero());
+            if (nodal)
+              for (int q = 0; q < 8; ++q) entry_load(k, q) = T(0);
             continue;
           }
+          T w[4] = {T(0), T(0), T(0), T(0)};
+          Vec3<T> v_surface;
+          if (nodal) {
+            contact::facet_weights(mesh, facet[m], c[m], w);
+            v_surface = Vec3<T>::zero();
+            for (int a = 0; a < mesh.corners(facet[m]); ++a) v_surface += w[a] * load<3>(node_velocity, mesh.facets(facet[m], a));
+          } else {
+            v_surface = motion.at(c[m].point);
+          }
           const Vec3<T> n = c[m].normal;
-          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - motion.at(c[m].point);
+          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - v_surface;
           Vec3<T> xi = detail::spring(hist, k, friction);
           if (friction && norm2(xi) == T(0)) {
             xi = carried;
@@ -332,6 +368,11 @@ void sphere_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& m
           detail::add_contact(s, i, n, ri, ri, f.force);
           f_sum -= f.force;
           m_sum -= cross(c[m].point - motion.centre, f.force);
+          if (nodal) {
+            for (int q = 0; q < 3; ++q) entry_load(k, q) = -f.force[q];
+            for (int a = 0; a < 4; ++a) entry_load(k, 3 + a) = w[a];
+            entry_load(k, 7) = T(0);
+          }
         }
         if (react)
           for (int k = 0; k < 3; ++k) {

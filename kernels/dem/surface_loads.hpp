@@ -18,14 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "contact/facet_weights.hpp"
 #include "dem/contact_forces.hpp"
 
 namespace polymech::dem {
-
-// Per listed sphere-facet entry: the force on the surface (3) and the four corner weights.
-template <class T>
-using EntryLoadView = Kokkos::View<T* [8], Kokkos::LayoutRight, MemSpace>;
 
 // For each surface node the facets it is a corner of, in increasing facet order, with the corner index.
 struct SurfaceAdjacency {
@@ -78,66 +73,13 @@ inline SurfaceAdjacency surface_adjacency(Index nodes, const std::vector<int>& f
   return s;
 }
 
-// Kernel "polymech::dem::sphere_deforming_facet": as sphere_facet (one force per touching feature, the springs
-// carried from a dropped duplicate to the kept contact), with the surface's velocity at the contact point
-// sum_a w_a v_a from the nodes' velocities `node_velocity`, R* = r and m* = m; entry_load(k) gets the force on
-// the surface and the weights of listed entry k (zero for an entry not in contact).
+// Kernel "polymech::dem::sphere_deforming_facet": sphere_facet_forces (dem/contact_forces.hpp) on a surface
+// whose nodes move with `node_velocity`; entry_load(k) gets the force on the surface and the weights of entry k.
 template <class T>
 void sphere_deforming_facet_forces(const SphereSet<T>& s, const contact::SurfaceMesh<T>& mesh, const neighbors::NeighborList& list,
                                    const SpringView<T>& hist, const HertzMindlin<T>& p, bool friction, T dt,
                                    const VecView<T, 3>& node_velocity, const EntryLoadView<T>& entry_load) {
-  Kokkos::parallel_for(
-      "polymech::dem::sphere_deforming_facet", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
-        const HertzMindlin<T> law = p;
-        const T h = dt;
-        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
-        const T ri = s.radius(i), mi = s.mass(i);
-        contact::FacetContact<T> c[max_facets_per_sphere];
-        Index facet[max_facets_per_sphere];
-        const Offset begin = list.begin(i);
-        const Offset listed = list.end(i) - begin;
-        const int count = static_cast<int>(kx::min<Offset>(listed, Offset(max_facets_per_sphere)));
-        for (int m = 0; m < count; ++m) {
-          facet[m] = list.neighbor(begin + m);
-          c[m] = contact::sphere_facet_contact(mesh, facet[m], xi_pos, ri);
-        }
-        for (Offset k = begin + count; k < begin + listed; ++k)  // beyond the row's capacity: no load
-          for (int q = 0; q < 8; ++q) entry_load(k, q) = T(0);
-        bool keep[max_facets_per_sphere];
-        for (int m = 0; m < count; ++m) keep[m] = contact::keep_facet_contact(mesh, facet, c, count, m);
-        Vec3<T> carried = Vec3<T>::zero();
-        if (friction)
-          for (int m = 0; m < count; ++m)
-            if (!keep[m] && c[m].region != contact::FacetRegion::none) {
-              const Vec3<T> x = load<3>(hist, begin + m);
-              if (norm2(x) > norm2(carried)) carried = x;
-            }
-        for (int m = 0; m < count; ++m) {
-          const Offset k = begin + m;
-          if (!keep[m]) {
-            if (friction) store<3>(hist, k, Vec3<T>::zero());
-            for (int q = 0; q < 8; ++q) entry_load(k, q) = T(0);
-            continue;
-          }
-          T w[4];
-          contact::facet_weights(mesh, facet[m], c[m], w);
-          Vec3<T> v_surface = Vec3<T>::zero();
-          for (int a = 0; a < mesh.corners(facet[m]); ++a) v_surface += w[a] * load<3>(node_velocity, mesh.facets(facet[m], a));
-          const Vec3<T> n = c[m].normal;
-          const Vec3<T> v_rel = vi + cross(wi, (-ri) * n) - v_surface;
-          Vec3<T> xi = detail::spring(hist, k, friction);
-          if (friction && norm2(xi) == T(0)) {
-            xi = carried;
-            carried = Vec3<T>::zero();
-          }
-          const auto f = hertz_mindlin_force(law, ri, mi, c[m].overlap, n, v_rel, friction, h, xi);
-          if (friction) store<3>(hist, k, xi);
-          detail::add_contact(s, i, n, ri, ri, f.force);
-          for (int q = 0; q < 3; ++q) entry_load(k, q) = -f.force[q];
-          for (int a = 0; a < 4; ++a) entry_load(k, 3 + a) = w[a];
-          entry_load(k, 7) = T(0);
-        }
-      });
+  sphere_facet_forces(s, mesh, list, hist, p, friction, dt, SurfaceMotion<T>(), WrenchView<T>(), DeformingSurface<T>{node_velocity, entry_load});
 }
 
 // Kernel "polymech::dem::surface_node_loads": node_force(n) = sum over the facets f of node n (adjacency
