@@ -19,23 +19,29 @@ namespace {
 // planes, set down at 2 ms, loaded over 10-12 ms after that (the paper's ramp: the wheel bounces on the
 // spheres' Hertz springs, period ~ 28 ms, like the fluctuation of Fig. 8), driven at 0.2 m/s (12-15 ms)
 // with 20 % slip.
-dm::Config wheel_on_a_layer(double speed, double load_to = 0.012) {
+// nx x ny spheres of radius r in one layer on the floor of a box just wide enough, gravel's contact law, the
+// wheel's effects.
+dm::Config layer(double r, int nx, int ny, const char* wheel_effect) {
   dm::Config c;
   c.particle = {5e7, 0.3, 2650};
   c.wall = {5e7, 0.3, 2650};
   c.restitution = 0.4;
   c.friction = 0.5;
   c.gravity = {0, 0, -9.81};
-  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces", "rigid_wheel"}, dm::effect_table());
-  const double r = 0.005, lx = 0.2, ly = 0.08;
-  for (int j = 0; j < 8; ++j)
-    for (int i = 0; i < 20; ++i) {
+  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces", wheel_effect}, dm::effect_table());
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
       dm::SphereInit s;
       s.radius = r;
       s.position = {r + 2 * r * i, r + 2 * r * j, r};
       c.spheres.push_back(s);
     }
-  c.planes = dm::box_planes(lx, ly);
+  c.planes = dm::box_planes(2 * r * nx, 2 * r * ny);
+  return c;
+}
+
+dm::Config wheel_on_a_layer(double speed, double load_to = 0.012) {
+  dm::Config c = layer(0.005, 20, 8, "rigid_wheel");
   auto& w = c.wheel;
   w.radius = 0.06;
   w.width = 0.04;
@@ -152,22 +158,7 @@ namespace {
 // order-1 cells: 672 DoFs) on one layer of 20 mm spheres (15 x 10) on the floor of a box, set down at once,
 // inflated to 0.35 MPa over 5 ms, loaded with the paper's 10 163 N from 5 ms to `load_to`; a light rim (10 kg).
 dm::Config tyre_on_a_layer(double speed, double load_to) {
-  dm::Config c;
-  c.particle = {5e7, 0.3, 2650};
-  c.wall = {5e7, 0.3, 2650};
-  c.restitution = 0.4;
-  c.friction = 0.5;
-  c.gravity = {0, 0, -9.81};
-  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces", "fe_tyre"}, dm::effect_table());
-  const double r = 0.02, lx = 0.6, ly = 0.4;
-  for (int j = 0; j < 10; ++j)
-    for (int i = 0; i < 15; ++i) {
-      dm::SphereInit s;
-      s.radius = r;
-      s.position = {r + 2 * r * i, r + 2 * r * j, r};
-      c.spheres.push_back(s);
-    }
-  c.planes = dm::box_planes(lx, ly);
+  dm::Config c = layer(0.02, 15, 10, "fe_tyre");
   auto& w = c.wheel;
   w.radius = 0.445;
   w.width = 0.31;
