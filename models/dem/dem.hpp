@@ -231,6 +231,14 @@ class Dem {
   // neighbour lists' skin in one step (issue 33 item 2): the lists are rebuilt when a sphere has moved half
   // the skin, so beyond that contacts are missed and spheres pass through each other or a wall.
   models::Health health() const {
+    if (tyre_ && !tyre_drive_.failure().empty()) {  // the tyre stopped evaluating (dem/tyre_drive.hpp)
+      models::Health t;
+      t.finite = false;
+      t.what = "tyre";
+      t.first_bad = 0;
+      t.problem = tyre_drive_.failure();
+      return t;
+    }
     const models::Health h = models::particle_health<T, 3>(s_);
     if (!h.finite || !(cfg_.dt > 0)) return h;
     return models::speed_health(s_, skin(cfg_, clump_init_) / cfg_.dt, "the neighbour skin per step (skin / dt)");

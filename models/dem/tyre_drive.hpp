@@ -118,17 +118,26 @@ class TyreDrive {
       if (static_cast<double>(step) * dt + 0.5 * dt < spec_.start) return;
       set_down(static_cast<double>(step) * dt, s);
     }
+    if (!failure_.empty()) return;
     solid_->first_half();
     place(mesh);
   }
   // After the contact forces: the tyre's forces at t + dt (the spheres' node forces external) and its second
   // kick; the gravel's force and moment on the tyre summed in node order.
+  // A tyre whose state stops evaluating (an inverted element) is not stepped again: failure() says why, and
+  // the model's health check turns it into a diverged run (exit 1, the reason in summary.json).
   void second_half() {
-    if (!placed()) return;
-    solid_->second_half();
+    if (!placed() || !failure_.empty()) return;
+    try {
+      solid_->second_half();
+    } catch (const std::runtime_error& e) {
+      failure_ = e.what();
+      return;
+    }
     sum_contact();
     keep_record();
   }
+  const std::string& failure() const { return failure_; }
 
   // The tyre after `step` steps of dt, as WheelState (its rim's centre and the tread's lowest point).
   WheelState state(std::int64_t step, double dt) const {
@@ -189,6 +198,7 @@ class TyreDrive {
   Kokkos::View<TyreRecord*, HostSpace> record_;
   particles::SumPartials partials_;
   std::array<double, 6> contact_{};
+  std::string failure_;
 };
 
 }  // namespace polymech::dem
