@@ -60,7 +60,21 @@ CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
     c.size_keys.push_back("time.dt = " + format_number(s.dt));
     c.size_keys.push_back("time.end_time = " + format_number(s.end_time));
   }
-  if (s.fsi) {
+  if (s.fsi && s.transient) {
+    // FSI2 / FSI3 (models/fsi/turek_hron_fsi_transient.hpp): per time step ~3 coupling evaluations (IQN-ILS
+    // reusing 8 steps: 2.7-3.1 on average, docs/VALIDATION.md), each one chord fluid step (one factorisation and
+    // its solves, ~1 Newton iteration's cost), and the incremental mesh motion's factorisation (as FSI1's set-up).
+    // Measured at level 0 (bench/sweep_turek_hron_fsi, one thread, Intel Xeon): 0.057 s per FSI2 step (3000
+    // steps, 170 s), 0.059 s per FSI3 step (5000, 297 s); this gives 0.057 s at level 0 and 0.53 s at level 1.
+    const double per_step = 3.0 * iteration + 0.08 * std::pow(unknowns / 9106.0, 1.4);
+    c.method = "Taylor-Hood Q2/Q1 ALE Navier-Stokes (BDF2) + SVK flag (Newmark), Turek-Hron FSI" + std::to_string(s.test) +
+               ", level " + std::to_string(s.level) + ", dt " + format_number(s.dt) + ", " + s.coupling_method + " coupling per step";
+    c.steps = static_cast<double>(s.steps());
+    c.step_name = "time steps (~3 coupling evaluations each)";
+    c.seconds = c.steps * per_step;
+    c.bytes = 30e6 + 1.45 * unknowns * (2e3 + 600.0 * std::log2(std::max(2.0, unknowns)));
+    c.rate = "a time step ~ 3 x 0.15 s x (unknowns / 9106)^1.6 + the mesh motion's factorisation (1 thread, level 0 measured)";
+  } else if (s.fsi) {
     // FSI1 (models/fsi/turek_hron_fsi.hpp): every coupling evaluation solves the fluid from the last state. Measured
     // (notes h-fsi1, levels 0-3): the first solve 3 Oseen + ~5 Newton iterations, ~2 per later evaluation and ~2
     // for the final solve on the converged mesh: 8 + 2 E iterations (IQN-ILS, E = 6: 20 vs 21 counted; Aitken,
@@ -96,32 +110,40 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   {
     const SceneTable t = root.table("case");
     c.benchmark = t.choice("benchmark", {"turek_hron"});
-    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3", "fsi1"});
-    c.fsi = test == "fsi1";
-    c.test = test[3] - '0';  // fsi1: CFD1's inflow
+    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3", "fsi1", "fsi2", "fsi3"});
+    c.fsi = test.compare(0, 3, "fsi") == 0;
+    c.test = test[3] - '0';  // fsi1, fsi2, fsi3: the inflow of CFD1, CFD2, CFD3
     const double ubar[4] = {0.0, 0.2, 1.0, 2.0};
     c.mean_velocity = t.real("mean_velocity", ubar[c.test], Range{0.0, 100.0, true, false, "m/s (the inflow's mean velocity)"});
     c.density = t.real("density", 1000.0, Range{1e-3, 1e5, false, false, "kg/m^3"});
     c.viscosity = t.real("viscosity", 1e-3, Range{1e-8, 1e3, false, false, "m^2/s (kinematic)"});
     t.finish();
   }
-  c.transient = c.test == 3;
+  c.transient = c.test == 3 || (c.fsi && c.test == 2);  // cfd3, fsi2, fsi3
   {
     const SceneTable t = root.table("mesh");
     c.scene_level = static_cast<int>(t.integer("level", 0, 6));
     const int coarser = static_cast<int>(std::lround(std::log2(out.header.coarsening)));
     c.level = std::max(0, c.scene_level - coarser);
+    if (c.fsi && c.level > 4)
+      t.fail("level", "= " + std::to_string(c.scene_level) + (c.level != c.scene_level ? " (level " + std::to_string(c.level) + " at accuracy \"" +
+                                                                  out.header.accuracy + "\")" : std::string()) +
+                          " is out of range: the fsi tests' flag lattice is built on levels 0..4");
     // not the benchmark's mesh (its 20 blocks are uniform): the ring's radial planes on the map
     // (exp(a t) - 1) / (exp(a) - 1), a = ring_grading (CFD2 drag -0.29 % at level 1 with a = 1, -2.9 % uniform)
     c.ring_grading = t.real("ring_grading", 0.0, Range{0.0, 6.0, true, true, "(0: uniform; a > 0 grades the ring towards the circle)"});
     if (c.fsi && c.ring_grading > 0.0)
-      t.fail("ring_grading", "applies to cfd1, cfd2 and cfd3; FSI1's flag lattice is matched to the uniform mesh: remove it");
+      t.fail("ring_grading", "applies to cfd1, cfd2 and cfd3; the fsi tests' flag lattice is matched to the uniform mesh: remove it");
     t.finish();
   }
+  // fsi2, fsi3: per time step, relative to max(|G(x)|, 1 mm) (bench/sweep_turek_hron_fsi's runs, docs/VALIDATION.md)
+  if (c.fsi && c.transient) c.coupling_tolerance = 1e-6;
   if (const auto t = root.optional_table("coupling")) {
-    if (!c.fsi) t->fail_table("applies to test = \"fsi1\" (the elastic flag); cfd1, cfd2 and cfd3 have a rigid flag: remove [coupling]");
+    if (!c.fsi)
+      t->fail_table("applies to the fsi tests (the elastic flag: test = \"fsi1\", \"fsi2\", \"fsi3\"); cfd1, cfd2 and cfd3 have a rigid "
+                    "flag: remove [coupling]");
     c.coupling_method = t->choice("method", {"iqn-ils", "aitken", "relaxation"}, "iqn-ils");
-    c.coupling_tolerance = t->real("tolerance", 1e-8, Range{1e-14, 1e-2, false, false, "(|G(x) - x| relative to |G(x)|)"});
+    c.coupling_tolerance = t->real("tolerance", c.coupling_tolerance, Range{1e-14, 1e-2, false, false, "(|G(x) - x| relative to |G(x)|)"});
     c.coupling_max_iterations = static_cast<int>(t->integer("max_iterations", 50, 1, 10000));
     c.coupling_omega = t->real("omega", 0.5, Range{0.0, 2.0, true, true, "(the first step's relaxation factor)"});
     if (c.coupling_method == "iqn-ils") {
@@ -133,8 +155,8 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   }
   if (c.fsi) {
     if (const auto t = root.optional_table("solver"))
-      t->fail_table("applies to the cfd tests; fsi1's fluid solves use the coupled model's Newton settings (3 Oseen steps "
-                    "on the first solve, tolerance 1e-10): remove [solver], set [coupling]");
+      t->fail_table("applies to the cfd tests; the fsi tests' fluid solves use the coupled model's Newton settings (fsi1: 3 "
+                    "Oseen steps on the first solve; tolerance 1e-10; fsi2, fsi3: the chord iteration): remove [solver], set [coupling]");
     c.picard_steps = 3;
   } else if (const auto t = root.optional_table("solver")) {
     c.picard_steps = static_cast<int>(t->integer("picard_steps", c.transient ? 0 : 3, 0, 100));
@@ -152,15 +174,21 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   const auto time = root.optional_table("time");
   const auto kick = root.optional_table("kick");
   if (!c.transient) {
-    if (time) time->fail_table("applies to test = \"cfd3\" (periodic); cfd1, cfd2 and fsi1 are solved steady: remove [time]");
+    if (time) time->fail_table("applies to test = \"cfd3\", \"fsi2\", \"fsi3\" (periodic); cfd1, cfd2 and fsi1 are solved steady: remove [time]");
     if (kick) kick->fail_table("applies to test = \"cfd3\" (periodic); cfd1, cfd2 and fsi1 are solved steady: remove [kick]");
   } else {
-    if (!time) root.fail("time", "is missing: test = \"cfd3\" runs in time and needs [time] dt and end_time (s)");
+    if (!time) root.fail("time", "is missing: test = \"" + c.name() + "\" runs in time and needs [time] dt and end_time (s)");
+    if (c.fsi && kick)
+      kick->fail_table("applies to test = \"cfd3\" (the rigid flag); in " + c.name() + " the elastic flag's own oscillation breaks the symmetry: remove [kick]");
     c.dt = time->real("dt", Range{1e-6, 1.0, false, false, "s"});
+    c.scene_dt = c.dt;
+    // fsi2, fsi3: dt at accuracy "paper"; each level the preset takes off the mesh doubles it (scene header)
+    if (c.fsi) c.dt = std::ldexp(c.dt, c.scene_level - c.level);
     c.ramp_time = time->real("ramp_time", 2.0, Range{0.0, 1e4, false, false, "s (0: the full inflow from t = 0)"});
     c.end_time = time->real("end_time", Range{0.0, 1e5, true, false, "s"});
     if (!(c.end_time >= c.dt))
-      time->fail("end_time", "= " + format_number(c.end_time) + " is out of range: must be >= time.dt = " + format_number(c.dt) + " s");
+      time->fail("end_time", "= " + format_number(c.end_time) + " is out of range: must be >= time.dt = " + format_number(c.dt) + " s" +
+                                 (c.dt != c.scene_dt ? " (" + format_number(c.scene_dt) + " s at accuracy \"paper\", doubled per level off)" : ""));
     if (c.steps() > 100000000LL) time->fail("end_time", "= " + format_number(c.end_time) + " gives more than 1e8 steps of time.dt");
     c.sample_every = static_cast<int>(time->integer("sample_every", 1, 1, 1000000));
     time->finish();

@@ -4,22 +4,28 @@
 //   [model]     kind = "flow", effects = [] (the model has none), precision = "double" (the sparse direct
 //               solves are double; "float" is refused)
 //   [case]      benchmark = "turek_hron" (the channel with the cylinder and the rigid flag, Turek & Hron 2006),
-//               test = "cfd1" | "cfd2" | "cfd3" | "fsi1" (the inflow's mean velocity 0.2, 1, 2, 0.2 m/s; cfd1,
-//               cfd2 and fsi1 are solved steady, cfd3 in time; fsi1 with the elastic SVK flag of
-//               models/fsi/turek_hron_fsi.hpp, its solid parameters the benchmark's), density (default
-//               1000 kg/m^3), viscosity (kinematic, default 1e-3 m^2/s): the benchmark's values unless changed
+//               test = "cfd1" | "cfd2" | "cfd3" | "fsi1" | "fsi2" | "fsi3" (the inflow's mean velocity 0.2, 1, 2,
+//               0.2, 1, 2 m/s; cfd1, cfd2 and fsi1 are solved steady, cfd3, fsi2 and fsi3 in time; the fsi tests
+//               with the elastic SVK flag of models/fsi/turek_hron_fsi.hpp, its solid parameters the benchmark's:
+//               models/fsi/turek_hron_fsi_transient.hpp for fsi2 and fsi3), density (default 1000 kg/m^3),
+//               viscosity (kinematic, default 1e-3 m^2/s): the benchmark's values unless changed
 //   [mesh]      level 0..6 at accuracy "paper" (260 x 4^level Q2/Q1 cells); the presets "standard" and "draft"
 //               take log2 of their factor (1 and 2 by default) levels off, down to level 0
-//   [coupling]  fsi1 only, optional: method = "iqn-ils" (default) | "aitken" | "relaxation", tolerance (|G(x) - x|
-//               relative to |G(x)|, default 1e-8), max_iterations (evaluations of G, default 50), omega (the
-//               first step's relaxation factor, the constant one for "relaxation", default 0.5), reuse
-//               (iqn-ils only, default 8: time steps whose columns are kept; a steady solve has one)
-//   [solver]    cfd tests only (fsi1's fluid solves use the model's: 3 Oseen steps, then Newton to 1e-10):
+//   [coupling]  fsi tests only, optional: method = "iqn-ils" (default) | "aitken" | "relaxation", tolerance
+//               (|G(x) - x| relative to |G(x)|, default 1e-8 for fsi1; fsi2 and fsi3: relative to
+//               max(|G(x)|, 1 mm), default 1e-6 per time step), max_iterations (evaluations of G, default 50;
+//               per time step in fsi2 and fsi3), omega (the first step's relaxation factor, the constant one for
+//               "relaxation", default 0.5), reuse (iqn-ils only, default 8: time steps whose columns are kept;
+//               a steady solve has one)
+//   [solver]    cfd tests only (the fsi tests' fluid solves use the coupled model's: Newton to 1e-10, the
+//               chord iteration in time):
 //               picard_steps (Oseen steps from rest before Newton; default 3 for a steady test, 0 in time),
 //               max_iterations (Newton, per solve or step, default 25), tolerance (on the update relative to
 //               max |u|, default 1e-10), chord (time steps: keep a step's first factorisation, default true)
-//   [time]      cfd3 only: dt (s), end_time (s), ramp_time (s, the inflow's cosine ramp, default 2),
-//               sample_every (steps between rows of forces.csv, default 1)
+//   [time]      cfd3, fsi2 and fsi3: dt (s), end_time (s), ramp_time (s, the inflow's cosine ramp, default 2),
+//               sample_every (steps between rows of forces.csv / series.csv, default 1). fsi2 and fsi3: dt is
+//               the step at accuracy "paper"; a preset that takes levels off the mesh doubles dt per level
+//               (the mesh and the step refined together: draft = level 0 at 4 dt when the scene's level is 2)
 //   [kick]      cfd3 only, optional: omega (rad/s, the peak angular velocity of a rigid rotation of the cylinder
 //               and flag that breaks the symmetry so shedding starts sooner), start (s, default the ramp's
 //               end), duration (s, default 0.25); models/flow/turek_hron.hpp
@@ -50,11 +56,12 @@ struct FlowSetup {
   double dt = 0.0, end_time = 0.0, ramp_time = 0.0;
   int sample_every = 1;
   double kick_omega = 0.0, kick_start = 2.0, kick_duration = 0.25;
-  bool fsi = false;                   // fsi1 (test stays 1: CFD1's inflow)
+  bool fsi = false;                   // fsi1, fsi2, fsi3 (test 1, 2, 3: the inflow of CFD1, CFD2, CFD3)
+  double scene_dt = 0.0;              // [time] dt as written (fsi2, fsi3: at accuracy "paper"; dt after the preset)
   std::string coupling_method = "iqn-ils";
   double coupling_tolerance = 1e-8, coupling_omega = 0.5;
   int coupling_max_iterations = 50, coupling_reuse = 8;
-  std::string name() const { return fsi ? "fsi1" : "cfd" + std::to_string(test); }
+  std::string name() const { return (fsi ? "fsi" : "cfd") + std::to_string(test); }
   std::int64_t steps() const { return transient ? static_cast<std::int64_t>(end_time / dt + 0.5) : 0; }
 };
 
@@ -72,7 +79,8 @@ double flow_channel_unknowns(int level);
 
 // What a run costs: the Newton iterations (steady) or the time steps (one factorisation each with the chord
 // iteration), each dominated by the sparse LU (docs/PERFORMANCE.md, issue 36); for fsi1 the fluid's Newton
-// iterations over the expected coupling evaluations (flow_fsi_evaluations) and the mesh motion's factorisation.
+// iterations over the expected coupling evaluations (flow_fsi_evaluations) and the mesh motion's factorisation;
+// for fsi2 and fsi3 the time steps, each ~3 coupling evaluations of one chord fluid step and a mesh factorisation.
 double flow_fsi_evaluations(const FlowSetup& s);
 CostEstimate flow_cost(const FlowSetup& s, double unknowns);
 

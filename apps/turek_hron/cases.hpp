@@ -1,6 +1,7 @@
 // The cases of apps/turek_hron (issue 36), each run from its scene (io/flow_scene.hpp) into summary.json:
 // the steady CFD1 and CFD2 and the periodic CFD3 on the fixed mesh (apps/turek_hron/cfd.cpp), the steady FSI1
-// with the elastic flag (apps/turek_hron/fsi1.cpp); and the summary keys they share.
+// with the elastic flag (apps/turek_hron/fsi1.cpp), the periodic FSI2 and FSI3 (apps/turek_hron/fsi_transient.cpp);
+// and the summary keys they share.
 #pragma once
 
 #include <string>
@@ -42,5 +43,11 @@ int run_turek_hron_transient(const io::FlowScene& scene, const CommonOptions& op
 // split). Returns 0, or 1 when the coupling (or a fluid or solid solve inside it) stopped without converging;
 // summary.json then says why (`reason`).
 int run_turek_hron_fsi1(const io::FlowScene& scene, const CommonOptions& opt);
+
+// FSI2 and FSI3: fsi::TurekHronFsiTransient at the scene's level and dt from rest with the ramped inflow; series.csv
+// as the run goes, summary.json with ux, uy (point A), drag and lift's mean and amplitude over the last period of
+// uy(A) and its frequency against Table 13, the coupling evaluations per step, the CPU split. Returns 1 when the
+// coupling (or a fluid or solid solve inside it) stopped; summary.json then says why (`reason`).
+int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt);
 
 }  // namespace polymech::apps

@@ -9,7 +9,11 @@
 //                 the last values when no shedding was found), the previous period's values (how settled the
 //                 oscillation is), CPU seconds and the cost split;
 //   fsi1       -> the elastic flag, partitioned steady coupling (apps/turek_hron/fsi1.cpp): summary.json with
-//                 ux_A, uy_A, drag, lift against Table 12, the coupling's evaluations, CPU split.
+//                 ux_A, uy_A, drag, lift against Table 12, the coupling's evaluations, CPU split;
+//   fsi2, fsi3 -> the elastic flag in time, strongly coupled per step (apps/turek_hron/fsi_transient.cpp):
+//                 series.csv (t, drag, lift, ux, uy of A, coupling evaluations), summary.json with the means and
+//                 amplitudes over the last period of uy(A) and its frequency against Table 13, `reason` and exit
+//                 code 1 when the coupling stops.
 //   turek_hron [--scene scenes/flow/cfd1.toml] [--out out/turek_hron] [--accuracy draft|standard|paper]
 //              [--steps N] [--dry-run] [--threads 1]
 #include <stdexcept>
@@ -23,7 +27,7 @@ namespace pm = polymech;
 
 int main(int argc, char** argv) {
   CLI::App app{"The Turek-Hron CFD and FSI tests: steady CFD1, CFD2 and periodic CFD3 past the cylinder and rigid flag, "
-               "steady FSI1 with the elastic flag (Taylor-Hood Navier-Stokes, partitioned coupling, issue 36)"};
+               "steady FSI1 and periodic FSI2, FSI3 with the elastic flag (Taylor-Hood Navier-Stokes, partitioned coupling, issue 36)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/flow/cfd1.toml", "out/turek_hron");
   if (const auto rc = pm::apps::parse_command_line(app, "turek_hron", argc, argv)) return *rc;
@@ -35,7 +39,7 @@ int main(int argc, char** argv) {
     const auto cost = transient ? pm::apps::with_steps(scene.cost, scene.config.steps(), opt.steps) : scene.cost;
     if (pm::apps::announce_cost("turek_hron", scene.header, cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
-    if (scene.config.fsi) return pm::apps::run_turek_hron_fsi1(scene, opt);
+    if (scene.config.fsi) return transient ? pm::apps::run_turek_hron_fsi_transient(scene, opt) : pm::apps::run_turek_hron_fsi1(scene, opt);
     return transient ? pm::apps::run_turek_hron_transient(scene, opt) : pm::apps::run_turek_hron_steady(scene, opt);
   });
 }

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "common/host_copy.hpp"
+#include "flow/analysis.hpp"
 #include "fsi/turek_hron_fsi.hpp"
 
 namespace polymech::fsi {
@@ -69,6 +70,18 @@ inline TurekHronFsiCase turek_hron_fsi_case(const std::string& test, int level) 
     throw std::invalid_argument("turek-hron fsi: unknown test '" + test + "' (fsi1, fsi2 or fsi3)");
   }
   return c;
+}
+
+// Turek & Hron 2006, Table 13 (the finest grids and time steps): mean and amplitude over the last period of
+// ux(A), uy(A) (m), drag and lift (N/m), and the frequency of uy(A) and lift (Hz; ux and drag oscillate at twice it).
+struct TurekHronFsiPeriodicReference {
+  double ux_mean = 0.0, ux_amplitude = 0.0, uy_mean = 0.0, uy_amplitude = 0.0;
+  double drag_mean = 0.0, drag_amplitude = 0.0, lift_mean = 0.0, lift_amplitude = 0.0, frequency = 0.0;
+};
+inline TurekHronFsiPeriodicReference turek_hron_fsi_periodic_reference(const std::string& test) {
+  if (test == "fsi2") return {-14.58e-3, 12.44e-3, 1.23e-3, 80.6e-3, 208.83, 73.75, 0.88, 234.2, 2.0};
+  if (test == "fsi3") return {-2.69e-3, 2.53e-3, 1.48e-3, 34.38e-3, 457.3, 22.66, 2.22, 149.78, 5.3};
+  throw std::invalid_argument("turek-hron fsi: no periodic reference for '" + test + "' (fsi2 or fsi3)");
 }
 
 struct TurekHronFsiStep {
@@ -196,6 +209,23 @@ class TurekHronFsiTransient : public TurekHronFsi {
   std::vector<double> d_n_, d_m_;        // the mesh displacement at t_n and t_n-1
   std::vector<double> x_n_;              // the wet nodes' displacement of the mesh at t_n
 };
+
+// The benchmark's statistics of a run (Turek & Hron 2006, section 3.3): mean = (max + min) / 2 and amplitude =
+// (max - min) / 2 of ux(A), uy(A), drag and lift over one period of uy(A) (the lift's period; ux and drag run at
+// twice its frequency), the frequency = 1 / that period; back = 0: the last full period (between the last two
+// maxima of uy), 1: the one before it. The period and the extremes are flow::period_stats / flow::periodic_stats
+// (CFD3's: models/flow/analysis.hpp). False when uy(A) has not yet two maxima (after `back` periods).
+struct TurekHronFsiPeriod {
+  flow::PeriodicStats ux, uy, drag, lift;
+};
+inline bool turek_hron_fsi_period(const std::vector<TurekHronFsiStep>& rows, int back, TurekHronFsiPeriod& p) {
+  std::vector<double> t, ux, uy, drag, lift;
+  for (const TurekHronFsiStep& r : rows) t.push_back(r.t), ux.push_back(r.ux), uy.push_back(r.uy), drag.push_back(r.drag), lift.push_back(r.lift);
+  if (!flow::period_stats(t, ux, uy, back, p.ux, p.uy)) return false;
+  p.drag = flow::periodic_stats(t, drag, p.uy.t_begin, p.uy.t_end);
+  p.lift = flow::periodic_stats(t, lift, p.uy.t_begin, p.uy.t_end);
+  return true;
+}
 
 // A reproducible run: `test` (fsi2 | fsi3), level, dt, end time; writes one CSV row per step (t, ux_A, uy_A, drag,
 // lift, coupling evaluations, |r|, int div u) to `csv` when it is non-null, and returns the rows.

@@ -5,6 +5,10 @@
 # at accuracy draft (level 1, ~3 s) converged with ux(A), uy(A), drag, lift near Table 12 (the patterns below:
 # measured -1.04, -0.39, -0.28, +0.31 %; the digits allow ux 2.2-2.3e-5 (-3..+1 %), uy 7.9-8.4e-4 (-3.8..+2.3 %),
 # drag 14.22-14.30, lift 0.75-0.77); a coupling cut short (2 evaluations) writes the reason and exits 1.
+# FSI2 (the elastic flag in time): a misspelt [time] key exits 2 with file:line:key; 5 steps at accuracy draft (level 0,
+# dt 0.008, ~1 s) write series.csv and a summary whose issue keys (drag, lift, ux, uy: mean and amplitude;
+# frequency) are numbers (a NaN would be written null), not periodic yet; a coupling cut to 1 evaluation per step
+# writes the reason and exits 1.
 # Label cli, like the other app runs.
 set(flow_env "OMP_NUM_THREADS=1;OMP_PROC_BIND=false;OMP_WAIT_POLICY=passive")
 function(flow_app_test name scene pattern)
@@ -28,3 +32,11 @@ flow_app_test(turek_hron_fsi1_draft ${PROJECT_SOURCE_DIR}/scenes/flow/fsi1.toml
   --accuracy draft)
 flow_app_test(turek_hron_fsi1_coupling_stops ${CMAKE_CURRENT_SOURCE_DIR}/data/fsi1_coupling_stops.toml
   "exit code 1: .*the aitken coupling stopped: no convergence in 2 evaluations.*summary.json: .*\"converged\": false,.*\"reason\": \"the aitken coupling stopped: no convergence in 2 evaluations")
+flow_app_test(turek_hron_fsi2_names_a_bad_key ${CMAKE_CURRENT_SOURCE_DIR}/data/fsi2_bad_key.toml
+  "exit code 2: turek_hron: error: .*fsi2_bad_key.toml:[0-9]+:1: unknown key 'time.ramp_tme'; allowed in \\[time\\]: .*ramp_time.*summary.json: missing")
+set(flow_num "-?[0-9][0-9.e+-]*,")
+flow_app_test(turek_hron_fsi2_steps ${PROJECT_SOURCE_DIR}/scenes/flow/fsi2.toml
+  "exit code 0: .*summary.json: .*\"converged\": true,.*\"coupling_evaluations_per_step\": [1-9][0-9.]*,.*\"drag_amplitude\": ${flow_num}.*\"drag_mean\": ${flow_num}.*\"files\": \\[[^]]*\"series.csv\".*\"frequency\": 0\\.0,.*\"level\": 0,.*\"lift_amplitude\": ${flow_num}.*\"lift_mean\": ${flow_num}.*\"periodic\": false,.*\"reference\": .*\"steps\": 5,.*\"test\": \"fsi2\",.*\"ux_amplitude\": ${flow_num}.*\"ux_mean\": ${flow_num}.*\"uy_amplitude\": ${flow_num}.*\"uy_mean\": -?[0-9]"
+  --accuracy draft --steps 5)
+flow_app_test(turek_hron_fsi2_coupling_stops ${CMAKE_CURRENT_SOURCE_DIR}/data/fsi2_coupling_stops.toml
+  "exit code 1: .*step 1: .*the coupling did not converge.*summary.json: .*\"converged\": false,.*\"reason\": \"step 1: turek-hron fsi transient: the coupling did not converge")

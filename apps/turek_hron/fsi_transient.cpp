@@ -1,0 +1,219 @@
+// The Turek-Hron FSI2 and FSI3 cases (issue 36; Turek & Hron 2006, section 3.3, Table 13): the elastic SVK flag
+// behind the cylinder at Ubar = 1 (FSI2, rho_s = 10 rho_f) and Ubar = 2 (FSI3), the inflow ramped over 2 s, the
+// flag's self-excited periodic oscillation. Partitioned Dirichlet-Neumann, strongly coupled in every time step
+// (models/fsi/turek_hron_fsi_transient.hpp: BDF2 ALE Taylor-Hood fluid on the pseudo-elastically moved mesh,
+// Newmark SVK flag, IQN-ILS / Aitken / relaxation on the wet nodes' displacement, models/fsi/coupling.hpp).
+// Writes series.csv as the run goes (t, drag, lift, ux, uy of point A, the step's coupling evaluations, |r|,
+// int div u) and summary.json with the benchmark's mean and amplitude over the last period of uy(A)
+// (fsi::turek_hron_fsi_period), against Table 13. No checkpoints (as CFD3): a killed run keeps series.csv.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "apps/common/case.hpp"
+#include "apps/turek_hron/cases.hpp"
+#include "fsi/turek_hron_fsi_transient.hpp"
+#include "io/progress.hpp"
+
+namespace polymech::apps {
+
+namespace {
+
+double cpu_since(std::clock_t c0) { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; }
+
+// mean = (max + min) / 2, amplitude = (max - min) / 2 over every sample (a run too short for a period of uy)
+flow::PeriodicStats whole_run(const std::vector<fsi::TurekHronFsiStep>& rows, double fsi::TurekHronFsiStep::*field) {
+  flow::PeriodicStats p;
+  if (rows.empty()) return p;
+  double lo = rows.front().*field, hi = lo;
+  for (const auto& r : rows) lo = std::min(lo, r.*field), hi = std::max(hi, r.*field);
+  p.mean = 0.5 * (hi + lo);
+  p.amplitude = 0.5 * (hi - lo);
+  p.t_begin = rows.front().t;
+  p.t_end = rows.back().t;
+  return p;
+}
+
+void put_stats(nlohmann::json& j, const std::string& name, const flow::PeriodicStats& p) {
+  j[name + "_mean"] = p.mean;
+  j[name + "_amplitude"] = p.amplitude;
+}
+
+}  // namespace
+
+int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt) {
+  const auto& s = scene.config;
+  const std::string test = s.name();
+  const std::int64_t steps = opt.steps > 0 ? opt.steps : s.steps();
+  CaseSpec spec("turek_hron", scene.header, steps, s.dt);
+  spec.checkpoints = false;  // as CFD3: no restart; series.csv is written as the run goes
+  spec.progress = false;     // the loop below keeps its own io::Progress
+  Case cs(spec, opt, {});
+  const std::clock_t c0 = std::clock();
+  const auto w0 = std::chrono::steady_clock::now();
+  fsi::TurekHronFsiCase c = fsi::turek_hron_fsi_case(test, s.level);
+  c.mean_velocity = s.mean_velocity;
+  c.rho_f = s.density;
+  c.nu_f = s.viscosity;
+  c.ramp_time = s.ramp_time;
+  c.fluid_chord = true;
+  // the per-step coupling of bench/sweep_turek_hron_fsi's runs (docs/VALIDATION.md): |r| <= tol max(|x~|, 1 mm)
+  c.coupling.method = fsi::coupling_method(s.coupling_method);
+  c.coupling.omega = s.coupling_omega;
+  c.coupling.tolerance = s.coupling_tolerance;
+  c.coupling.scale = 1e-3;
+  c.coupling.max_iterations = s.coupling_max_iterations;
+  c.coupling.reuse = s.coupling_reuse;
+  fsi::TurekHronFsiTransient model(c, s.dt);
+  const auto ref = fsi::turek_hron_fsi_periodic_reference(test);
+  if (!opt.quiet)
+    std::fprintf(stderr, "[turek_hron] %s\n  %s, level %d: %lld fluid unknowns, %lld mesh-motion unknowns, %lld solid DoFs, %zu wet nodes; "
+                 "dt %g s (%g at accuracy paper), %lld steps to t = %g s; %s coupling to %g per step; %s\n", scene.header.title.c_str(),
+                 test == "fsi2" ? "FSI2" : "FSI3", s.level, static_cast<long long>(model.fluid_unknowns()),
+                 static_cast<long long>(model.mesh_unknowns()), static_cast<long long>(model.solid_unknowns()), model.interface_nodes(), s.dt,
+                 s.scene_dt, static_cast<long long>(steps), static_cast<double>(steps) * s.dt, s.coupling_method.c_str(), s.coupling_tolerance,
+                 thread_count().c_str());
+  FILE* fp = std::fopen((cs.out() / "series.csv").c_str(), "w");
+  if (!fp) throw std::runtime_error("cannot write " + (cs.out() / "series.csv").string());
+  std::fprintf(fp, "t,drag,lift,ux,uy,evaluations,residual,int_div_u\n");
+  std::vector<fsi::TurekHronFsiStep> rows;
+  rows.reserve(static_cast<std::size_t>(steps));
+  io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
+  bool failed = false;
+  std::string reason;
+  long evaluations = 0;
+  int max_evaluations = 0;
+  double max_div = 0.0;
+  double next_report = 0.5;
+  for (std::int64_t k = 1; k <= steps; ++k) {
+    fsi::TurekHronFsiStep r;
+    try {
+      r = model.step();
+    } catch (const std::runtime_error& e) {  // the coupling stopped, or a fluid or solid Newton iteration inside it
+      failed = true;
+      reason = "step " + std::to_string(k) + ": " + e.what();
+      break;
+    }
+    if (!std::isfinite(r.drag) || !std::isfinite(r.lift) || !std::isfinite(r.ux) || !std::isfinite(r.uy)) {
+      failed = true;
+      reason = "step " + std::to_string(k) + " (t = " + models::format_g(r.t) + " s): a non-finite force or displacement";
+      break;
+    }
+    rows.push_back(r);
+    evaluations += r.evaluations;
+    max_evaluations = std::max(max_evaluations, r.evaluations);
+    max_div = std::max(max_div, std::abs(r.net_flux));
+    if (k % s.sample_every == 0)
+      std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%d,%.3e,%.3e\n", r.t, r.drag, r.lift, r.ux, r.uy, r.evaluations, r.residual,
+                   r.net_flux);
+    if (k % 20 == 0) std::fflush(fp);
+    progress.update(k);
+    if (!opt.quiet && r.t >= next_report - 1e-9) {
+      std::fprintf(stderr, "  t = %.2f s: ux(A) %.4e, uy(A) %.4e m, drag %.3f, lift %.3f N/m; %.2f evaluations per step; CPU %.0f s "
+                   "(%.3f s per step)\n", r.t, r.ux, r.uy, r.drag, r.lift, static_cast<double>(evaluations) / static_cast<double>(k),
+                   cpu_since(c0), cpu_since(c0) / static_cast<double>(k));
+      next_report += 0.5;
+    }
+  }
+  std::fclose(fp);
+  const auto done = static_cast<std::int64_t>(rows.size());
+  progress.done(done);
+  const double cpu = cpu_since(c0);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  const auto& t = model.timings();
+  nlohmann::json j = cs.summary();
+  j["test"] = test;
+  j["analysis"] = "transient";
+  j["level"] = s.level;
+  j["cells"] = model.fluid().mesh().element_count();
+  j["unknowns"] = model.fluid_unknowns();
+  j["mesh_unknowns"] = model.mesh_unknowns();
+  j["solid_unknowns"] = model.solid_unknowns();
+  j["interface_nodes"] = model.interface_nodes();
+  j["dt"] = s.dt;
+  j["dt_paper"] = s.scene_dt;
+  j["ramp_time"] = s.ramp_time;
+  j["steps"] = done;
+  j["end_time"] = rows.empty() ? 0.0 : rows.back().t;
+  j["converged"] = !failed;
+  if (failed) j["reason"] = reason;
+  const double per_step = done > 0 ? static_cast<double>(evaluations) / static_cast<double>(done) : 0.0;
+  j["coupling"] = {{"method", s.coupling_method}, {"tolerance", s.coupling_tolerance}, {"scale", 1e-3},
+                   {"max_iterations", s.coupling_max_iterations}, {"evaluations", evaluations},
+                   {"evaluations_per_step", per_step}, {"max_evaluations_per_step", max_evaluations}};
+  j["coupling_evaluations"] = t.evaluations;  // every evaluation of G, a failed step's included
+  j["coupling_evaluations_per_step"] = per_step;
+  j["fluid_newton_iterations"] = t.fluid_newton;
+  j["solid_newton_iterations"] = t.solid_newton;
+  j["max_abs_int_div_u"] = max_div;
+  j["cpu_seconds"] = cpu;
+  j["cpu_seconds_per_step"] = done > 0 ? cpu / static_cast<double>(done) : 0.0;
+  j["wall_seconds"] = wall;
+  j["cpu_split"] = {{"setup", t.setup}, {"mesh_motion", t.mesh}, {"fluid", t.fluid}, {"solid", t.solid}};
+  j["fluid_split"] = flow_cpu_split(model.fluid().timings());
+  j["reference"] = {{"source", "Turek & Hron 2006, Table 13"},
+                    {"ux_mean", ref.ux_mean}, {"ux_amplitude", ref.ux_amplitude}, {"uy_mean", ref.uy_mean},
+                    {"uy_amplitude", ref.uy_amplitude}, {"drag_mean", ref.drag_mean}, {"drag_amplitude", ref.drag_amplitude},
+                    {"lift_mean", ref.lift_mean}, {"lift_amplitude", ref.lift_amplitude}, {"frequency", ref.frequency}};
+  const double ubar = test == "fsi2" ? 1.0 : 2.0;
+  if (!(s.mean_velocity == ubar && s.density == 1000.0 && s.viscosity == 1e-3 && s.ramp_time == 2.0))
+    j["reference"]["note"] = "the scene changes the benchmark's inflow, ramp, density or viscosity";
+  fsi::TurekHronFsiPeriod p;
+  // a period of uy(A) whose swing is above round-off (1 um: the references' amplitudes are 2.5-80 mm)
+  const bool periodic = fsi::turek_hron_fsi_period(rows, 0, p) && p.uy.amplitude > 1e-6;
+  j["periodic"] = periodic;
+  if (periodic) {
+    put_stats(j, "ux", p.ux);
+    put_stats(j, "uy", p.uy);
+    put_stats(j, "drag", p.drag);
+    put_stats(j, "lift", p.lift);
+    j["frequency"] = p.uy.frequency;
+    j["period_window"] = {p.uy.t_begin, p.uy.t_end};
+    j["errors"] = {{"ux_mean", p.ux.mean / ref.ux_mean - 1.0}, {"ux_amplitude", p.ux.amplitude / ref.ux_amplitude - 1.0},
+                   {"uy_mean", p.uy.mean / ref.uy_mean - 1.0}, {"uy_amplitude", p.uy.amplitude / ref.uy_amplitude - 1.0},
+                   {"drag_mean", p.drag.mean / ref.drag_mean - 1.0}, {"drag_amplitude", p.drag.amplitude / ref.drag_amplitude - 1.0},
+                   {"lift_mean", p.lift.mean / ref.lift_mean - 1.0}, {"lift_amplitude", p.lift.amplitude / ref.lift_amplitude - 1.0},
+                   {"frequency", p.uy.frequency / ref.frequency - 1.0}};
+    fsi::TurekHronFsiPeriod q;
+    if (fsi::turek_hron_fsi_period(rows, 1, q))
+      j["previous_period"] = {{"ux_mean", q.ux.mean}, {"ux_amplitude", q.ux.amplitude}, {"uy_mean", q.uy.mean},
+                              {"uy_amplitude", q.uy.amplitude}, {"drag_mean", q.drag.mean}, {"drag_amplitude", q.drag.amplitude},
+                              {"lift_mean", q.lift.mean}, {"lift_amplitude", q.lift.amplitude}, {"frequency", q.uy.frequency},
+                              {"window", {q.uy.t_begin, q.uy.t_end}}};
+  } else {
+    // no full period of uy(A) yet: the same keys over the whole run (the ramp included), frequency 0
+    put_stats(j, "ux", whole_run(rows, &fsi::TurekHronFsiStep::ux));
+    put_stats(j, "uy", whole_run(rows, &fsi::TurekHronFsiStep::uy));
+    put_stats(j, "drag", whole_run(rows, &fsi::TurekHronFsiStep::drag));
+    put_stats(j, "lift", whole_run(rows, &fsi::TurekHronFsiStep::lift));
+    j["frequency"] = 0.0;
+    j["period_window"] = {rows.empty() ? 0.0 : rows.front().t, rows.empty() ? 0.0 : rows.back().t};
+    j["note"] = "no full period of uy(A) yet: the means and amplitudes are over the whole run";
+  }
+  const int rc = cs.finish(j, {"summary.json", "series.csv"});
+  const char* name = test == "fsi2" ? "FSI2" : "FSI3";
+  if (periodic)
+    std::printf("turek_hron: %s level %d dt %g to t = %g s: ux(A) %.4e +- %.4e, uy(A) %.4e +- %.4e m, drag %.3f +- %.3f, lift %.3f +- %.3f "
+                "N/m, %.4f Hz (reference %.4e +- %.4e, %.4e +- %.4e, %.2f +- %.2f, %.2f +- %.2f, %.1f Hz); %.2f evaluations per step; "
+                "CPU %.1f s; results in %s\n", name, s.level, s.dt, j["end_time"].get<double>(), p.ux.mean, p.ux.amplitude, p.uy.mean,
+                p.uy.amplitude, p.drag.mean, p.drag.amplitude, p.lift.mean, p.lift.amplitude, p.uy.frequency, ref.ux_mean, ref.ux_amplitude,
+                ref.uy_mean, ref.uy_amplitude, ref.drag_mean, ref.drag_amplitude, ref.lift_mean, ref.lift_amplitude, ref.frequency, per_step,
+                cpu, cs.out().c_str());
+  else
+    std::printf("turek_hron: %s level %d dt %g to t = %g s: no full period of uy(A) yet (uy %.4e m, drag %.3f, lift %.3f at the end); %.2f "
+                "evaluations per step; CPU %.1f s%s; results in %s\n", name, s.level, s.dt, j["end_time"].get<double>(),
+                rows.empty() ? 0.0 : rows.back().uy, rows.empty() ? 0.0 : rows.back().drag, rows.empty() ? 0.0 : rows.back().lift, per_step,
+                cpu, failed ? " (STOPPED)" : "", cs.out().c_str());
+  if (failed) {
+    std::fprintf(stderr, "turek_hron: %s\n", reason.c_str());
+    return 1;
+  }
+  return rc;
+}
+
+}  // namespace polymech::apps
