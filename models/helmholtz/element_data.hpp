@@ -46,38 +46,9 @@ inline std::int64_t chunk_size(const Config& c, int batch) {
   return (size + batch - 1) / batch * batch;
 }
 
-// The part's elements in chunks of `per_chunk` neighbours (the locality order of layout.elements), the
-// chunks coloured by shared vertices and sorted by colour: the storage order (mesh elements), the first
-// storage index of each chunk (and the end), the first chunk of each colour (and the end).
-struct ChunkOrder {
-  std::vector<std::int64_t> elements;
-  std::vector<Index> chunk_start;
-  std::vector<std::int32_t> color_offsets;
-};
-inline ChunkOrder chunk_order(const HexMesh& mesh, const std::vector<std::int64_t>& elements, std::int64_t per_chunk) {
-  const std::int64_t ne = static_cast<std::int64_t>(elements.size());
-  const std::int64_t nchunks = (ne + per_chunk - 1) / per_chunk;
-  std::vector<std::int64_t> chunk_vertex_offsets(1, 0), chunk_vertices;
-  for (std::int64_t k = 0; k < nchunks; ++k) {
-    const std::size_t first = chunk_vertices.size();
-    for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t)
-      for (int v = 0; v < 8; ++v) chunk_vertices.push_back(mesh.hexes[8 * elements[t] + v]);
-    std::sort(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end());
-    chunk_vertices.erase(std::unique(chunk_vertices.begin() + static_cast<std::ptrdiff_t>(first), chunk_vertices.end()),
-                         chunk_vertices.end());
-    chunk_vertex_offsets.push_back(static_cast<std::int64_t>(chunk_vertices.size()));
-  }
-  ChunkOrder out;
-  std::vector<std::int64_t> chunks;
-  sort_by_color(color_by_shared_vertices(chunk_vertex_offsets, chunk_vertices, mesh.vertex_count()), chunks,
-                out.color_offsets);
-  out.chunk_start.push_back(0);
-  for (const std::int64_t k : chunks) {
-    for (std::int64_t t = k * per_chunk; t < std::min(ne, (k + 1) * per_chunk); ++t) out.elements.push_back(elements[t]);
-    out.chunk_start.push_back(static_cast<Index>(out.elements.size()));
-  }
-  return out;
-}
+// The part's elements in chunks of neighbours, coloured: mesh::chunk_order (models/common/hex_dofs.hpp).
+using mesh::chunk_order;
+using mesh::ChunkOrder;
 
 // The DoFs of the elements listed in `elements` (storage order), as local DoFs; `encode` maps a global
 // DoF to the stored index (a constrained one encoded, or not).
@@ -121,7 +92,8 @@ ElementData<T> element_data(const Config& c, const HexDofs& dofs, const PartLayo
   d.el.owned = layout.owned;
   d.el.ghost = n - layout.owned;
   d.el.color_offsets.assign(chunks.color_offsets.begin(), chunks.color_offsets.end());
-  d.el.chunk_offsets = models::to_device<Index>("polymech::helmholtz::chunk_offsets", chunks.chunk_start);
+  d.el.chunk_offsets = models::to_device<Index>(
+      "polymech::helmholtz::chunk_offsets", std::vector<Index>(chunks.chunk_start.begin(), chunks.chunk_start.end()));
   d.el.dofs = element_dof_table("polymech::helmholtz::element_dofs", dofs, d.order, [&](std::int32_t global) {
     const std::int32_t l = local[global];
     return constrained[l] ? fem::constrained_dof(l) : l;
