@@ -39,6 +39,7 @@ struct HexMesh {
   std::vector<std::string> boundary_names;
   std::vector<BoundaryFace> boundary_faces;
   std::vector<std::string> element_origin;  // optional, per element: where it was read ("duct.msh:57")
+  std::string source;                       // the file it was read from ("" if generated), for messages
 
   std::int64_t vertex_count() const { return static_cast<std::int64_t>(vertices.size() / 3); }
   std::int64_t element_count() const { return static_cast<std::int64_t>(hexes.size() / 8); }
@@ -194,6 +195,7 @@ inline HexMesh hex_mesh_from(const Mesh& in) {
     throw std::invalid_argument((where.empty() ? in.file : where) + ": " + what);
   };
   HexMesh m;
+  m.source = in.file;
   m.vertices = in.nodes;
   for (const auto& h : in.hexahedra) {
     for (int k = 0; k < 8; ++k) m.hexes.push_back(h.nodes[k]);

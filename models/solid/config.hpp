@@ -1,6 +1,7 @@
 // Configuration of the static linear solid model (issue 34), plain data: the mesh, the element order, the
 // law, and loads and constraints as small objects, each acting on a named side of the structured mesh
-// (xmin, xmax, ymin, ymax, zmin, zmax; models/solid/mesh.hpp).
+// (xmin, xmax, ymin, ymax, zmin, zmax; models/solid/mesh.hpp), or, in 3D, on a named boundary (physical surface
+// group) of an unstructured hexahedral mesh (`hex_mesh`, e.g. a Gmsh file).
 #pragma once
 
 #include <array>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "materials/hill_plasticity.hpp"
+#include "common/hex_mesh.hpp"
 #include "materials/voigt.hpp"
 #include "solid/mesh.hpp"
 
@@ -43,6 +45,10 @@ enum class Plane { strain, stress };
 template <int D>
 struct Config {
   StructuredMesh<D> mesh;
+  // 3D only: an unstructured mesh of 8-node hexahedra with named boundaries, e.g.
+  // mesh::hex_mesh_from(io::read_gmsh_mesh(file)); when it has elements it replaces `mesh`, and the boundaries
+  // the loads and constraints name are its groups (models/solid/discretization.hpp).
+  ::polymech::mesh::HexMesh hex_mesh;
   int order = 2;
   materials::Stiffness6<double> stiffness = materials::isotropic_stiffness(1.0, 0.3);  // 3D Voigt C, every element
   // Elasto-plasticity (models/solid/elastoplastic.hpp): absent = elastic with `stiffness` (no history is
@@ -54,7 +60,7 @@ struct Config {
   std::vector<Traction> tractions;
   std::vector<BodyForce> body_forces;
   bool affine_geometry = true;  // one Jacobian per affine element (false: factors at every point)
-  int chunk_edge = 0;           // cells per chunk direction; 0: default_chunk_edge
+  int chunk_edge = 0;           // cells per chunk direction (hex_mesh: chunk_edge^3 elements per chunk); 0: default
 };
 
 }  // namespace polymech::solid

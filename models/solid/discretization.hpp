@@ -14,6 +14,15 @@
 // node() wraps the index, its two sides do not exist, and the chunk colouring gives the last block of an odd
 // number of blocks a third colour digit (it touches the first block through the seam). A mapped lattice
 // (StructuredMesh::map) places each node at the map of its multilinear position.
+//
+// Unstructured hexahedral meshes (3D; mesh::HexMesh, e.g. a Gmsh file through mesh::hex_mesh_from): the same
+// tables from the machinery the Helmholtz model uses (models/common/hex_dofs.hpp): order-p nodes numbered by
+// the sorted (vertex, weight) lists of their multilinear positions, so that the nodes on a shared edge or face
+// match whatever the elements' vertex orders; elements in the locality (Morton) order cut into chunks of
+// neighbours, the chunks coloured greedily by shared vertices (one colour's chunks share no node); the named
+// boundaries are the mesh's physical surface groups, each a list of faces in the face-lexicographic order of
+// its element's local face. `unstructured` is set and the lattice fields (cells, lattice, periodic, node_ids,
+// lattice_points, active) are empty; element_cells holds the mesh element of each stored element.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include "common/hex_dofs.hpp"
+#include "common/hex_mesh.hpp"
 #include "fem/basis.hpp"
 #include "solid/mesh.hpp"
 
@@ -44,6 +55,11 @@ struct Discretization {
   std::vector<char> active;                   // the mesh's cell mask
   std::vector<std::int64_t> node_ids;         // lattice point -> node, -1 where no active cell touches it
   std::vector<std::int64_t> lattice_points;   // node -> lattice point
+  // unstructured meshes only (discretize(const mesh::HexMesh&, ...)): element_cells holds mesh elements
+  bool unstructured = false;
+  std::vector<std::string> boundary_names;                // the mesh's named boundaries
+  std::vector<std::vector<std::int64_t>> boundary_faces;  // per name: faces x N^(D-1) nodes (as side_faces)
+  std::string mesh_source;                                // the file the mesh was read from, for messages
 
   int nodes_per_element() const { return D == 3 ? n1d * n1d * n1d : n1d * n1d; }
   // The lattice point of index I (a periodic direction's index taken modulo its lattice).
@@ -232,10 +248,74 @@ Discretization<D> discretize(const StructuredMesh<D>& m, int order, int chunk_ed
   return s;
 }
 
+// Elements per chunk of an unstructured mesh: about 8000 element nodes on the host (as default_chunk_edge),
+// at least 32 chunks per thread when the mesh allows; one element per chunk on a device.
+inline std::int64_t default_chunk_elements(std::int64_t elements, int order, int threads, bool device) {
+  if (device) return 1;
+  const std::int64_t n = order + 1;
+  return std::max<std::int64_t>(1, std::min<std::int64_t>(8000 / (n * n * n), elements / (32 * std::max(1, threads))));
+}
+
+// The order-p discretization of an unstructured hexahedral mesh (see the header): chunks of `chunk_elements`
+// neighbouring elements.
+inline Discretization<3> discretize(const mesh::HexMesh& m, int order, std::int64_t chunk_elements) {
+  if (order < fem::min_order || order > fem::max_order)
+    throw std::invalid_argument("solid: order " + std::to_string(order) + " is not supported; allowed: 1..4");
+  const std::string from = m.source.empty() ? std::string("a generated mesh") : m.source;
+  if (m.element_count() == 0) throw std::invalid_argument("solid: the hexahedral mesh (" + from + ") has no elements");
+  Discretization<3> s;
+  s.order = order;
+  s.n1d = order + 1;
+  s.unstructured = true;
+  s.mesh_source = m.source;
+  const std::vector<std::int64_t> traversal = mesh::locality_order(m);
+  const mesh::HexDofs dofs = mesh::number_dofs(m, order, traversal);
+  s.nodes = dofs.count;
+  s.coordinates = dofs.coordinates;
+  const mesh::ChunkOrder chunks = mesh::chunk_order(m, traversal, std::max<std::int64_t>(1, chunk_elements));
+  const int ND = s.nodes_per_element();
+  s.element_cells = chunks.elements;
+  s.element_nodes.reserve(chunks.elements.size() * static_cast<std::size_t>(ND));
+  for (const std::int64_t e : chunks.elements)
+    for (int a = 0; a < ND; ++a) s.element_nodes.push_back(dofs.element_dofs[static_cast<std::size_t>(e * ND + a)]);
+  s.chunk_start = chunks.chunk_start;
+  s.color_offsets.assign(chunks.color_offsets.begin(), chunks.color_offsets.end());
+  s.boundary_names = m.boundary_names;
+  s.boundary_faces.resize(m.boundary_names.size());
+  for (const auto& f : m.boundary_faces) {
+    auto& out = s.boundary_faces[static_cast<std::size_t>(f.boundary)];
+    for (const int a : mesh::face_local_nodes(s.n1d, f.face))
+      out.push_back(dofs.element_dofs[static_cast<std::size_t>(f.element * ND + a)]);
+  }
+  return s;
+}
+
+namespace detail {
+// The faces of the named boundary of an unstructured discretization; an unknown name is an error that names
+// it, the mesh's file and the boundaries it has.
+template <int D>
+const std::vector<std::int64_t>& named_boundary(const Discretization<D>& s, const std::string& name) {
+  for (std::size_t b = 0; b < s.boundary_names.size(); ++b)
+    if (s.boundary_names[b] == name) return s.boundary_faces[b];
+  std::string have;
+  for (const auto& n : s.boundary_names) have += (have.empty() ? "'" : ", '") + n + "'";
+  const std::string of = s.mesh_source.empty() ? std::string("the mesh") : "the mesh " + s.mesh_source;
+  if (have.empty()) have = "none (the mesh names no boundary)";
+  throw std::invalid_argument("solid: boundary '" + name + "' is not a named boundary (physical surface group) of " +
+                              of + "; allowed: " + have);
+}
+}  // namespace detail
+
 // Nodes of a named side (every node with lattice index 0 or the last along the side's direction; on a
-// masked lattice the existing ones).
+// masked lattice the existing ones; on an unstructured mesh the nodes of the named boundary's faces, ascending).
 template <int D>
 std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::string& side) {
+  if (s.unstructured) {
+    std::vector<std::int64_t> out = detail::named_boundary(s, side);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
   const auto ds = side_of<D>(side);
   if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
   if (s.periodic[ds[0]]) throw std::invalid_argument("solid: boundary '" + side + "' does not exist (its direction is periodic)");
@@ -248,9 +328,12 @@ std::vector<std::int64_t> side_nodes(const Discretization<D>& s, const std::stri
 }
 
 // Faces of a named side: faces x N^(D-1) nodes, the other directions in increasing order, lower fastest
-// (the face-lexicographic order of fem::HexFaces); on a masked lattice the faces of active cells only.
+// (the face-lexicographic order of fem::HexFaces); on a masked lattice the faces of active cells only; on an
+// unstructured mesh the faces of the named boundary, each in the face-lexicographic order of its element's
+// local face (mesh::face_local_nodes).
 template <int D>
 std::vector<std::int64_t> side_faces(const Discretization<D>& s, const std::string& side) {
+  if (s.unstructured) return detail::named_boundary(s, side);
   const auto ds = side_of<D>(side);
   if (ds[0] < 0) throw std::invalid_argument("solid: unknown boundary '" + side + "'");
   if (s.periodic[ds[0]]) throw std::invalid_argument("solid: boundary '" + side + "' does not exist (its direction is periodic)");

@@ -1,7 +1,7 @@
-// The set-up a static solid model shares (issue 34): from a Config, the discretization of the structured
-// mesh (elements, chunks and colours), the node coordinates and geometry, the Dirichlet constraints (the mask
-// per node, the encoded element table, the list of constrained DoFs and their values g), the uniform elastic
-// stiffness per element, the external force f_ext (tractions and body forces) and the linear lifting
+// The set-up a static solid model shares (issue 34): from a Config, the discretization of the structured mesh or of
+// the unstructured hexahedral one (elements, chunks and colours), the node coordinates and geometry, the Dirichlet
+// constraints (the mask per node, the encoded element table, the list of constrained DoFs and their values g), the
+// uniform elastic stiffness per element, the external force f_ext (tractions and body forces) and the linear lifting
 // rhs = f_ext - K g off the constrained rows, g on them. solid::LinearElastic (linear_elastic.hpp) and
 // solid::ElastoPlastic (elastoplastic.hpp) both derive from it.
 #pragma once
@@ -65,9 +65,21 @@ class SolidProblem {
   void set_up_elements() {
     const bool device = !Kokkos::SpaceAccessibility<HostSpace, MemSpace>::accessible;
     const int threads = kx::concurrency<ExecSpace>();
-    const int edge =
-        config_.chunk_edge > 0 ? config_.chunk_edge : default_chunk_edge(config_.mesh, config_.order, threads, device);
-    disc_ = discretize(config_.mesh, config_.order, edge);
+    if (config_.hex_mesh.element_count() > 0) {
+      if constexpr (D == 3) {
+        const std::int64_t e = config_.chunk_edge;
+        const std::int64_t per_chunk =
+            e > 0 ? e * e * e
+                  : default_chunk_elements(config_.hex_mesh.element_count(), config_.order, threads, device);
+        disc_ = discretize(config_.hex_mesh, config_.order, per_chunk);
+      } else {
+        throw std::invalid_argument("solid: an unstructured hexahedral mesh needs the 3D model (Config<3>)");
+      }
+    } else {
+      const int edge = config_.chunk_edge > 0 ? config_.chunk_edge
+                                              : default_chunk_edge(config_.mesh, config_.order, threads, device);
+      disc_ = discretize(config_.mesh, config_.order, edge);
+    }
     auto& el = op_.el;
     el.cells.order = config_.order;
     el.cells.batch = solid_batch<T>();
@@ -125,10 +137,16 @@ class SolidProblem {
       }
     Kokkos::deep_copy(el.cells.dofs, dh);
     jacobian_ = compute_geometry(el, x_, config_.affine_geometry);
-    if (!(jacobian_.min_ratio > 0.0))
-      throw std::invalid_argument("solid: element " + std::to_string(jacobian_.element) +
+    if (!(jacobian_.min_ratio > 0.0)) {
+      const std::int64_t e = jacobian_.element;  // storage index; an unstructured mesh names the file's element
+      const bool named = disc_.unstructured && e >= 0 && e < static_cast<std::int64_t>(disc_.element_cells.size());
+      const std::string which =
+          named ? config_.hex_mesh.describe_element(disc_.element_cells[static_cast<std::size_t>(e)])
+                : "element " + std::to_string(e);
+      throw std::invalid_argument("solid: " + which +
                                   " is inverted or too distorted: det J / (volume / 2^D) = " +
                                   models::format_g(jacobian_.min_ratio) + " (allowed: > 0); reduce the distortion");
+    }
     materials::Stiffness6<double> C = config_.stiffness;
     if (D == 2 && config_.plane == Plane::stress) C = materials::plane_stress_condensed(C);
     set_uniform_material(el, C);
