@@ -65,7 +65,8 @@ CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
     // reusing 8 steps: 2.7-3.1 on average, docs/VALIDATION.md), each one chord fluid step (one factorisation and
     // its solves, ~1 Newton iteration's cost), and the incremental mesh motion's factorisation (as FSI1's set-up).
     // Measured at level 0 (bench/sweep_turek_hron_fsi, one thread, Intel Xeon): 0.057 s per FSI2 step (3000
-    // steps, 170 s), 0.059 s per FSI3 step (5000, 297 s); this gives 0.057 s at level 0 and 0.53 s at level 1.
+    // steps, 170 s), 0.059 s per FSI3 step (5000, 297 s); this gives 0.057 s at level 0 and 0.53 s at level 1
+    // (apps/turek_hron, notes h-fsi23: 0.060 s per step for FSI2 at level 0, dt 0.008; 0.48-0.52 s for FSI3 at level 1).
     const double per_step = 3.0 * iteration + 0.08 * std::pow(unknowns / 9106.0, 1.4);
     c.method = "Taylor-Hood Q2/Q1 ALE Navier-Stokes (BDF2) + SVK flag (Newmark), Turek-Hron FSI" + std::to_string(s.test) +
                ", level " + std::to_string(s.level) + ", dt " + format_number(s.dt) + ", " + s.coupling_method + " coupling per step";
