@@ -9,13 +9,22 @@
 //                                counters newton_per_step, linear_per_step (CG iterations or LU solves);
 //                                solver 0 = assembled tangent + host sparse LU every iteration,
 //                                1 = matrix-free CG on the tangent preconditioned by the elastic LU (default)
+//   BM_CoarseSolve/kind/h10      the coarse level of the two-level preconditioner (models/solid/two_level.hpp):
+//                                the order-1 elastic stiffness of the micro-cantilever (beam + block, theta 0)
+//                                with h_root = h10 / 10 um, one solve with its sparse LU factors (COLAMD);
+//                                kind 0 = double, 1 = float factors: time per solve, counters dofs,
+//                                factor_seconds
 // Run on a shared machine with OMP_NUM_THREADS=1:
 //   OMP_NUM_THREADS=1 OMP_PROC_BIND=false build/ci/bench/bench_solid_plastic
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "solid/elastoplastic.hpp"
+#include "solid/micro_cantilever.hpp"
+#include "solvers/host_sparse_lu.hpp"
 
 namespace pm = polymech;
 namespace so = polymech::solid;
@@ -130,8 +139,29 @@ void BM_LoadUnload(benchmark::State& state) {
   state.counters["dofs"] = dofs;
 }
 
+void BM_CoarseSolve(benchmark::State& state) {
+  so::MicroCantileverSpec spec;
+  spec.order = 1;
+  spec.h_root = 0.1 * static_cast<double>(state.range(1));
+  const so::LinearElastic<double, 3> coarse(so::micro_cantilever(spec));
+  const so::Triplets a = coarse.assemble();
+  polymech::solvers::HostSparseLU lu;
+  const auto t0 = std::chrono::steady_clock::now();
+  lu.factor(a.n, a.rows, a.cols, a.values, state.range(0) == 1);
+  const double factor_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<double> b(static_cast<std::size_t>(a.n));
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] = std::sin(0.37 * static_cast<double>(i));
+  for (auto _ : state) {
+    lu.solve(b.data());
+    benchmark::DoNotOptimize(b.data());
+  }
+  state.counters["dofs"] = static_cast<double>(a.n);
+  state.counters["factor_seconds"] = factor_seconds;
+}
+
 }  // namespace
 
+BENCHMARK(BM_CoarseSolve)->Args({0, 4})->Args({1, 4})->Args({0, 2})->Args({1, 2})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlasticResidual)->Args({1, 32})->Args({2, 16})->Args({3, 11})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlasticTangentApply)->Args({1, 32})->Args({2, 16})->Args({3, 11})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LoadUnload)->Args({0, 1})->Args({1, 1})->Args({0, 2})->Args({1, 2})->Iterations(1)->Unit(benchmark::kMillisecond);

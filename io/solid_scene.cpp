@@ -93,7 +93,8 @@ SolidMeshSize solid_mesh_size(const SolidBeam& b, const SolidMesh& m, double h_r
 }
 
 // Rates measured with apps/micro_cantilever (the notes h-app-docs, for docs/PERFORMANCE.md).
-CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, bool single, double curves, int increments) {
+CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, bool single, double curves, int increments,
+                        const std::string& solver) {
   CostEstimate c;
   c.method = std::string("FE solid, order ") + std::to_string(order) + (plasticity ? ", Hill plasticity" : ", linear elastic");
   c.item_name = "DoFs";
@@ -102,17 +103,26 @@ CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, b
   c.steps = curves * increments;
   c.step_name = "load steps (" + format_number(curves) + (curves == 1 ? " curve)" : " curves)");
   const double real = single ? 4.0 : 8.0;
-  // measured resident memory (host sparse LU of the elastic stiffness, the tangent's CSR for "direct", the
-  // per-point geometry, history and tangent): 343 MB at 17 307 DoFs and 1.30 GB at 50 463 (order 2)
-  c.bytes = 20e6 + size.dofs * (18e3 * std::pow(size.dofs / 17307.0, 0.3)) + size.points * (10.0 + (plasticity ? 50.0 : 0.0)) * real;
-  // a curve, CPU seconds on one thread (notes h-app-docs): 0.15 s at 1 260 DoFs (order 1, 6 steps), 15 s at
-  // 17 307 (order 2, 12 steps), 110 s at 50 463: a linear part (the element kernels) and one that grows like
-  // DoFs^2 (the CG iterations preconditioned by the elastic LU, its fill and the factorization)
-  const double per_curve = (increments / 12.0) * (2.4e-4 * size.dofs + 11.0 * std::pow(size.dofs / 17307.0, 2.0));
-  c.seconds = curves * per_curve * (plasticity ? 1.0 : 0.3);
-  c.rate = std::string("a curve of 12 steps ~ 2.4e-4 s x DoFs + 11 s x (DoFs / 17 307)^2") +
-           (plasticity ? "" : " x 0.3 (elastic: one Newton iteration per step)") +
-           " (apps/micro_cantilever, 1 thread, notes h-app-docs)";
+  const double n = size.dofs / 17307.0;  // relative to the draft mesh
+  double per_curve = 0.0;                // CPU seconds of a 12-step curve on one thread
+  if (solver == "two_level_pcg") {
+    // measured with the defaults of 2026-11-27 (one thread, theta 0, Intel Xeon, docs/PERFORMANCE.md): resident
+    // 38 MB at 17 307 DoFs, 107 MB at 50 463, 359 MB at 152 661 (the float coarse LU, the per-point history and
+    // tangent); CPU 2.05 s, 12.1 s, 82.4 s per curve: about DoFs^1.7 (the CG iterations grow with the mesh)
+    c.bytes = 10e6 + size.dofs * 1.2e3 * std::pow(n, 0.2) + size.points * (10.0 + (plasticity ? 50.0 : 0.0)) * real;
+    per_curve = 0.1 + 2.05 * std::pow(n, 1.7);
+    c.rate = "a curve of 12 steps ~ 0.1 s + 2.05 s x (DoFs / 17 307)^1.7";
+  } else {
+    // the order-p LU of the elastic stiffness ("elastic_pcg") or of the tangent ("direct"): 343 MB at 17 307 DoFs
+    // and 1.30 GB at 50 463 (order 2); 0.15 s at 1 260 DoFs (order 1, 6 steps), 15 s at 17 307, 110 s at 50 463
+    // (elastic_pcg, notes h-app-docs): a linear part and one that grows like DoFs^2 (the LU's fill)
+    c.bytes = 20e6 + size.dofs * (18e3 * std::pow(n, 0.3)) + size.points * (10.0 + (plasticity ? 50.0 : 0.0)) * real;
+    per_curve = 2.4e-4 * size.dofs + 11.0 * n * n;
+    c.rate = "a curve of 12 steps ~ 2.4e-4 s x DoFs + 11 s x (DoFs / 17 307)^2";
+  }
+  c.seconds = curves * (increments / 12.0) * per_curve * (plasticity ? 1.0 : 0.3);
+  c.rate += std::string(plasticity ? "" : " x 0.3 (elastic: one Newton iteration per step)") + " (apps/micro_cantilever, " +
+            solver + ", 1 thread)";
   c.rate_threads = 1;
   return c;
 }
@@ -124,7 +134,7 @@ CostEstimate solid_scene_cost(const SolidScene& s, std::size_t n_angles, bool in
   const std::vector<std::string> keys = {"mesh.h_root = " + um_text(s.mesh.h_root) + " (after the preset)",
                                          "mesh.order = " + std::to_string(s.mesh.order), "beam.support_* (the block)"};
   if (!inverse || !s.inverse) {
-    CostEstimate c = solid_cost(s.size, s.mesh.order, s.plasticity, single, angles, increments);
+    CostEstimate c = solid_cost(s.size, s.mesh.order, s.plasticity, single, angles, increments, s.newton.solver);
     c.size_keys = keys;
     return c;
   }
@@ -133,8 +143,8 @@ CostEstimate solid_scene_cost(const SolidScene& s, std::size_t n_angles, bool in
   // angle in 8 iterations, notes h-app-docs), and the fitted curves
   const double iterations = std::min(s.inverse->max_iterations, 8);
   const double runs = angles * (1.0 + 9.0 * iterations + 1.0);
-  const CostEstimate e = solid_cost(s.inverse->experiment_size, s.mesh.order, true, single, angles, increments);
-  CostEstimate c = solid_cost(s.size, s.mesh.order, true, single, runs, increments);
+  const CostEstimate e = solid_cost(s.inverse->experiment_size, s.mesh.order, true, single, angles, increments, s.newton.solver);
+  CostEstimate c = solid_cost(s.size, s.mesh.order, true, single, runs, increments, s.newton.solver);
   c.method += ", inverse study";
   c.seconds += e.seconds;
   c.steps += e.steps;

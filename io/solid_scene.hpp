@@ -98,7 +98,8 @@ struct SolidScene {
 SolidMeshSize solid_mesh_size(const SolidBeam& beam, const SolidMesh& mesh, double h_root = 0.0);
 
 // Predicted time and memory of `curves` load-unload curves of (load + unload) increments on a mesh of `size`.
-CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, bool single, double curves, int increments);
+CostEstimate solid_cost(const SolidMeshSize& size, int order, bool plasticity, bool single, double curves, int increments,
+                        const std::string& solver = "two_level_pcg");
 
 // The cost of running scene `s` at `angles` angles: its load-unload curves, or (inverse) its inverse study.
 CostEstimate solid_scene_cost(const SolidScene& s, std::size_t angles, bool inverse);

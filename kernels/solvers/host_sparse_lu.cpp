@@ -16,9 +16,9 @@ template <class S>
 using EigenLU = Eigen::SparseLU<Eigen::SparseMatrix<S>, Eigen::COLAMDOrdering<int>>;
 
 // Checks the entries, builds the matrix and factorises it into lu (the name says which class reports).
-template <class S>
+template <class S, class V = S>
 void factor_into(const char* name, EigenLU<S>& lu, std::int64_t n, const std::vector<std::int64_t>& rows,
-                 const std::vector<std::int64_t>& cols, const std::vector<S>& values) {
+                 const std::vector<std::int64_t>& cols, const std::vector<V>& values) {
   const std::string who = name;
   if (n <= 0 || n > std::numeric_limits<int>::max())
     throw std::invalid_argument(who + ": matrix size " + std::to_string(n) + " outside 1 .. 2^31 - 1");
@@ -31,7 +31,7 @@ void factor_into(const char* name, EigenLU<S>& lu, std::int64_t n, const std::ve
     if (rows[k] < 0 || rows[k] >= n || cols[k] < 0 || cols[k] >= n)
       throw std::invalid_argument(who + ": entry (" + std::to_string(rows[k]) + ", " + std::to_string(cols[k]) +
                                   ") outside the " + std::to_string(n) + " x " + std::to_string(n) + " matrix");
-    entries.emplace_back(static_cast<int>(rows[k]), static_cast<int>(cols[k]), values[k]);
+    entries.emplace_back(static_cast<int>(rows[k]), static_cast<int>(cols[k]), static_cast<S>(values[k]));
   }
   Eigen::SparseMatrix<S> a(static_cast<int>(n), static_cast<int>(n));
   a.setFromTriplets(entries.begin(), entries.end());
@@ -53,6 +53,8 @@ void solve_in_place(const EigenLU<S>& lu, std::int64_t n, S* x) {
 
 struct HostSparseLU::Impl {
   EigenLU<double> lu;
+  EigenLU<float> lu_single;  // factor(..., single = true)
+  bool single = false;
 };
 
 HostSparseLU::HostSparseLU() = default;
@@ -61,18 +63,28 @@ HostSparseLU::HostSparseLU(HostSparseLU&&) noexcept = default;
 HostSparseLU& HostSparseLU::operator=(HostSparseLU&&) noexcept = default;
 
 void HostSparseLU::factor(std::int64_t n, const std::vector<std::int64_t>& rows, const std::vector<std::int64_t>& cols,
-                          const std::vector<double>& values) {
+                          const std::vector<double>& values, bool single) {
   impl_.reset();
   n_ = 0;
   auto impl = std::make_unique<Impl>();
-  factor_into("HostSparseLU", impl->lu, n, rows, cols, values);
+  impl->single = single;
+  if (single)
+    factor_into("HostSparseLU", impl->lu_single, n, rows, cols, values);
+  else
+    factor_into("HostSparseLU", impl->lu, n, rows, cols, values);
   impl_ = std::move(impl);
   n_ = n;
 }
 
 void HostSparseLU::solve(double* x) const {
   if (!impl_) throw std::logic_error("HostSparseLU: solve() before a successful factor()");
-  solve_in_place(impl_->lu, n_, x);
+  if (!impl_->single) {
+    solve_in_place(impl_->lu, n_, x);
+    return;
+  }
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 1>> v(x, static_cast<Eigen::Index>(n_));
+  const Eigen::VectorXf e = impl_->lu_single.solve(v.cast<float>());
+  v = e.cast<double>();
 }
 
 struct HostSparseLUComplex::Impl {

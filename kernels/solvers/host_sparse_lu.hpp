@@ -26,9 +26,11 @@ class HostSparseLU {
 
   // Factorise the n x n matrix with the entries (rows[k], cols[k], values[k]) (repeated entries are
   // summed). Throws std::invalid_argument for inconsistent input, std::runtime_error when the
-  // factorisation fails (a singular matrix); the previous factorisation is then gone.
+  // factorisation fails (a singular matrix); the previous factorisation is then gone. single = true
+  // factorises and solves in float (half the factors' memory traffic: for a preconditioner's coarse level,
+  // whose solve reads the whole factors at every application; docs/PERFORMANCE.md has the measured gain).
   void factor(std::int64_t n, const std::vector<std::int64_t>& rows, const std::vector<std::int64_t>& cols,
-              const std::vector<double>& values);
+              const std::vector<double>& values, bool single = false);
   // x <- A^-1 x, x holding size() values. Throws std::logic_error before a successful factor().
   void solve(double* x) const;
   std::int64_t size() const { return n_; }

@@ -168,7 +168,7 @@ class ElastoPlastic : public NewtonSolid<T, D, ElastoPlastic<T, D>> {
       if (options_.solver == TangentSolver::two_level_pcg && !two_level_) {
         elastic_inv_diag_ = this->op_.inverse_diagonal();
         two_level_ = std::make_unique<TwoLevel<T, D, ElasticOperator<T, D>>>(
-            &this->op_, elastic_inv_diag_, this->config_, this->disc_, this->constrained_);
+            &this->op_, elastic_inv_diag_, this->config_, this->disc_, this->constrained_, options_.two_level);
       } else if (options_.solver == TangentSolver::elastic_pcg && !elastic_lu_pcg_) {
         const Triplets t = this->assemble_elastic();
         elastic_lu_k_.factor(t.n, t.rows, t.cols, t.values);

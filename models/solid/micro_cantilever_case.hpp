@@ -43,10 +43,14 @@ inline const std::vector<double>& paper_angles() {
 // The beam's Newton defaults: the tangent solved by CG with the elastic two-level p-multigrid and the inexact
 // forcing term (elastoplastic.hpp): 3.4x faster than the elastic-LU preconditioner on a 3.6e4-DoF beam
 // (188 s -> 55 s with exact solves -> 28.6 s inexact, one thread, shared machine; the same curve to 5 digits).
+// Each step starts from the secant extrapolation of the last two (newton.hpp), and the cycle smooths with
+// degree 5 over [hi / 30, hi] on float coarse factors (two_level.hpp): the paper-resolution curve (152 661
+// DoFs, two threads) 123.4 s -> 57.1 s, the same curve to 7 digits (docs/PERFORMANCE.md).
 inline NewtonOptions beam_newton_options() {
   NewtonOptions o;
   o.solver = TangentSolver::two_level_pcg;
   o.forcing = 0.1;
+  o.secant_predictor = true;
   return o;
 }
 

@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "solid/problem.hpp"
+#include "solid/two_level.hpp"
 #include "solvers/host_sparse_lu.hpp"
 #include "solvers/krylov.hpp"
 
@@ -73,6 +74,7 @@ struct NewtonOptions {
   double linear_tolerance = 1e-10;  // CG solvers: relative residual of CG
   double linear_accept = 1e-7;      // a CG stopped short (attainable accuracy) still serves if its true residual is below
   int linear_max_iterations = 1000;
+  TwoLevelOptions two_level;        // two_level_pcg: the cycle's smoothing and coarse solver
   // > 0: inexact Newton (Eisenstat & Walker 1996): CG only to max(linear_tolerance, min(1e-2, forcing |r| / F_ref)),
   // loose while |r| is large, tight near convergence (superlinear; 0 keeps every solve at linear_tolerance and
   // Newton's quadratic rate, which tests/solid/test_solid_plasticity.cpp shows)
