@@ -6,7 +6,9 @@
 Writes forces.png into the run folder from summary.json and forces.csv (a transient run, CFD3): drag and
 lift on the cylinder and flag against time, the window of the last period the summary's mean and amplitude
 come from shaded, and the published reference (Turek & Hron 2006: drag 439.45 +- 5.6183, lift -11.893 +-
-437.81, 4.3956 Hz) as lines. A steady run (CFD1, CFD2) has no time series: it is refused with the reason.
+437.81, 4.3956 Hz) as lines. An FSI2 / FSI3 run (series.csv) gets four panels, drag, lift, ux(A) and uy(A),
+with its summary's reference (Table 13). A steady run (CFD1, CFD2, FSI1) has no time series: it is refused
+with the reason.
 """
 import os
 import sys
@@ -25,24 +27,32 @@ def main():
     s = read_summary(run, cases=("turek_hron",))
     if s.get("analysis") != "transient":
         raise InputError(f"{os.path.join(run, 'summary.json')}: a steady run (no forces.csv to plot); its drag and lift are in the summary")
-    f = load_csv(args.forces or os.path.join(run, "forces.csv"), required=("t", "drag", "lift"))
+    fsi = s.get("test") in ("fsi2", "fsi3")
+    keys = ("drag", "lift", "ux", "uy") if fsi else ("drag", "lift")
+    f = load_csv(args.forces or os.path.join(run, "series.csv" if fsi else "forces.csv"), required=("t",) + keys)
+    reference = dict(REFERENCE)
+    if fsi:
+        r = s.get("reference") or {}
+        reference = {k: (r.get(f"{k}_mean", float("nan")), r.get(f"{k}_amplitude", float("nan"))) for k in keys}
+        reference["frequency"] = r.get("frequency")
     plt = pyplot()
-    fig, axes = plt.subplots(2, 1, figsize=(10, 6.5), sharex=True)
+    fig, axes = plt.subplots(len(keys), 1, figsize=(10, 3.2 * len(keys)), sharex=True)
     window = s.get("period_window")
-    for ax, key in zip(axes, ("drag", "lift")):
+    for ax, key in zip(axes, keys):
         ax.plot(f["t"], f[key], lw=0.8, label=f"polymech, level {s.get('level')}, dt {s.get('dt')}")
-        mean, amp = REFERENCE[key]
+        mean, amp = reference[key]
         ax.axhline(mean + amp, color="k", ls="--", lw=0.7, label="reference mean +- amplitude")
         ax.axhline(mean - amp, color="k", ls="--", lw=0.7)
         if window:
             ax.axvspan(window[0], window[1], color="0.85", label="last period")
         if f"{key}_mean" in s:
-            ax.set_title(f"{key}: {s[f'{key}_mean']:.3f} +- {s[f'{key}_amplitude']:.3f} (reference {mean} +- {amp})", fontsize=9)
-        ax.set_ylabel(f"{key} [N/m]")
+            ax.set_title(f"{key}: {s[f'{key}_mean']:.4g} +- {s[f'{key}_amplitude']:.4g} (reference {mean} +- {amp})", fontsize=9)
+        ax.set_ylabel(f"{key} [m]" if key in ("ux", "uy") else f"{key} [N/m]")
         ax.legend(fontsize=7, loc="lower left")
-    axes[1].set_xlabel("t [s]")
+    axes[-1].set_xlabel("t [s]")
     freq = s.get("frequency")
-    fig.suptitle(f"Turek-Hron CFD3: frequency {freq:.4f} Hz (reference {REFERENCE['frequency']})" if freq else "Turek-Hron CFD3")
+    name = s.get("test", "cfd3").upper()
+    fig.suptitle(f"Turek-Hron {name}: frequency {freq:.4f} Hz (reference {reference['frequency']})" if freq else f"Turek-Hron {name}")
     fig.tight_layout()
     out = os.path.join(run, "forces.png")
     fig.savefig(out, dpi=110)
