@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/app.hpp"
+#include "apps/common/restart.hpp"
 #include "flow/navier_stokes.hpp"
 #include "io/flow_scene.hpp"
 
@@ -35,8 +36,8 @@ int run_turek_hron_steady(const io::FlowScene& scene, const CommonOptions& opt);
 
 // CFD3: BDF2 from rest with the ramped inflow; forces.csv as the run goes, summary.json with the means,
 // amplitudes and frequency over the last lift period (and the period before it). Returns 1 when a step's
-// Newton iteration did not converge.
-int run_turek_hron_transient(const io::FlowScene& scene, const CommonOptions& opt);
+// Newton iteration did not converge. Checkpoints and --restart as every time-stepping app (restart.hpp).
+int run_turek_hron_transient(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& restart);
 
 // Builds fsi::TurekHronFsi at the scene's level, solves the coupled steady state and writes summary.json
 // (ux_A, uy_A, drag, lift against Turek & Hron 2006's Table 12, the coupling's evaluations and history, the CPU
@@ -47,7 +48,8 @@ int run_turek_hron_fsi1(const io::FlowScene& scene, const CommonOptions& opt);
 // FSI2 and FSI3: fsi::TurekHronFsiTransient at the scene's level and dt from rest with the ramped inflow; series.csv
 // as the run goes, summary.json with ux, uy (point A), drag and lift's mean and amplitude over the last period of
 // uy(A) and its frequency against Table 13, the coupling evaluations per step, the CPU split. Returns 1 when the
-// coupling (or a fluid or solid solve inside it) stopped; summary.json then says why (`reason`).
-int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt);
+// coupling (or a fluid or solid solve inside it) stopped; summary.json then says why (`reason`). Checkpoints and
+// --restart as every time-stepping app (restart.hpp).
+int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& restart);
 
 }  // namespace polymech::apps

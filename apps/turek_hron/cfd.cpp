@@ -1,6 +1,7 @@
 // The Turek-Hron CFD tests of apps/turek_hron (issue 36; seed 002 paper 1 eqs. (1)-(3) on a fixed mesh): the
 // channel with the cylinder and the rigid flag, Taylor-Hood Q2/Q1 (models/flow), steady (CFD1, CFD2: Newton)
-// or periodic (CFD3: BDF2 from rest with the inflow ramped); what they write: apps/turek_hron/main.cpp.
+// or periodic (CFD3: BDF2 from rest with the inflow ramped, checkpoints and --restart: apps/turek_hron/loop_checkpoints.hpp);
+// what they write: apps/turek_hron/main.cpp.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,8 +12,10 @@
 
 #include "apps/common/case.hpp"
 #include "apps/turek_hron/cases.hpp"
+#include "apps/turek_hron/loop_checkpoints.hpp"
 #include "common/host_copy.hpp"
 #include "flow/analysis.hpp"
+#include "flow/time_state_archive.hpp"
 #include "flow/turek_hron.hpp"
 #include "io/flow_scene.hpp"
 
@@ -116,15 +119,28 @@ int pm::apps::run_turek_hron_steady(const pm::io::FlowScene& scene, const pm::ap
   return 0;
 }
 
-int pm::apps::run_turek_hron_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions& opt) {
+int pm::apps::run_turek_hron_transient(const pm::io::FlowScene& scene, const pm::apps::CommonOptions& opt,
+                                       const pm::apps::RestartOptions& ropt) {
   const auto& s = scene.config;
   const std::int64_t steps = opt.steps > 0 ? opt.steps : s.steps();
   pm::apps::CaseSpec spec("turek_hron", scene.header, steps, s.dt);
-  spec.checkpoints = false;
   spec.progress = false;  // the loop below keeps its own io::Progress
-  pm::apps::Case cs(spec, opt, {});
-  const std::clock_t c0 = std::clock();
-  const auto w0 = std::chrono::steady_clock::now();
+  pm::apps::Case cs(spec, opt, ropt);
+  // the run so far (per step: t, drag, lift, Newton iterations), into every checkpoint
+  std::vector<double> ts, drag, lift, iterations;
+  ts.reserve(static_cast<std::size_t>(steps));
+  drag.reserve(static_cast<std::size_t>(steps));
+  lift.reserve(static_cast<std::size_t>(steps));
+  iterations.reserve(static_cast<std::size_t>(steps));
+  long newton = 0;
+  double next_report = 1.0;
+  cs.records.keep("turek_hron/t", ts);
+  cs.records.keep("turek_hron/drag", drag);
+  cs.records.keep("turek_hron/lift", lift);
+  cs.records.keep("turek_hron/newton_iterations", iterations);
+  cs.records.keep("turek_hron/newton", newton);
+  cs.records.keep("turek_hron/next_report", next_report);
+  pm::apps::LoopCheckpoints ck(cs);  // with --restart: the records above are the checkpoint's
   const fl::FlowConfig cfg = flow_config(s);
   fl::NavierStokes2D ns(fl::make_turek_hron_channel(s.level, geometry_of(s)), cfg);
   // CFL of the inflow's peak speed 1.5 Ubar on the smallest node spacing (half the smallest cell edge of the Q2 mesh)
@@ -139,20 +155,23 @@ int pm::apps::run_turek_hron_transient(const pm::io::FlowScene& scene, const pm:
                  s.kick_omega != 0.0 ? (", kick " + pm::io::format_number(s.kick_omega) + " rad/s at t = " +
                                         pm::io::format_number(s.kick_start) + " s").c_str() : "",
                  pm::apps::thread_count().c_str());
+  if (ck.resume()) ns.set_time_state(fl::load_time_state(*ck.resume(), "model/fluid/"));
+  // forces.csv: written as the run goes; a restarted run writes the rows of the steps before it again
   FILE* fp = std::fopen((cs.out() / "forces.csv").c_str(), "w");
   if (!fp) throw std::runtime_error("cannot write " + (cs.out() / "forces.csv").string());
   std::fprintf(fp, "t,drag,lift,newton_iterations\n");
-  std::vector<double> ts, drag, lift;
-  ts.reserve(static_cast<std::size_t>(steps));
-  drag.reserve(static_cast<std::size_t>(steps));
-  lift.reserve(static_cast<std::size_t>(steps));
+  auto write_row = [&](std::int64_t k) {
+    const std::size_t i = static_cast<std::size_t>(k - 1);
+    if (k % s.sample_every == 0)
+      std::fprintf(fp, "%.9g,%.12e,%.12e,%d\n", ts[i], drag[i], lift[i], static_cast<int>(iterations[i]));
+  };
+  for (std::int64_t k = 1; k <= static_cast<std::int64_t>(ts.size()); ++k) write_row(k);
   pm::io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
-  long newton = 0;
+  progress.resume_at(ck.first_step());
   bool failed = false;
   std::string reason;
-  std::int64_t done = 0;
-  double next_report = 1.0;
-  for (std::int64_t k = 1; k <= steps; ++k) {
+  std::int64_t done = ck.first_step();
+  for (std::int64_t k = ck.first_step() + 1; k <= steps; ++k) {
     const auto r = ns.step(s.dt);
     newton += r.iterations;
     if (!r.converged) {
@@ -168,18 +187,20 @@ int pm::apps::run_turek_hron_transient(const pm::io::FlowScene& scene, const pm:
     ts.push_back(ns.time());
     drag.push_back(f.drag);
     lift.push_back(f.lift);
-    if (k % s.sample_every == 0) std::fprintf(fp, "%.9g,%.12e,%.12e,%d\n", ns.time(), f.drag, f.lift, r.iterations);
+    iterations.push_back(r.iterations);
+    write_row(k);
     if (k % 50 == 0) std::fflush(fp);
     progress.update(k);
     if (!opt.quiet && ns.time() >= next_report - 1e-9) {
-      std::fprintf(stderr, "  t = %.2f s: drag %.3f, lift %.3f, CPU %.0f s\n", ns.time(), f.drag, f.lift, cpu_seconds(c0));
+      std::fprintf(stderr, "  t = %.2f s: drag %.3f, lift %.3f, CPU %.0f s\n", ns.time(), f.drag, f.lift, ck.cpu_seconds());
       next_report += 1.0;
     }
+    ck.after_step(k, steps, [&](pm::models::Archive& a) { fl::save_time_state(a, "model/fluid/", ns.time_state()); });
   }
   std::fclose(fp);
   progress.done(done);
-  const double cpu = cpu_seconds(c0);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  const double cpu = ck.cpu_seconds();  // the interrupted processes' included
+  const double wall = ck.wall_seconds();
   nlohmann::json j = cs.summary();
   j["test"] = "cfd" + std::to_string(s.test);
   j["analysis"] = "transient";
@@ -198,7 +219,8 @@ int pm::apps::run_turek_hron_transient(const pm::io::FlowScene& scene, const pm:
   j["cpu_seconds"] = cpu;
   j["cpu_seconds_per_step"] = done > 0 ? cpu / static_cast<double>(done) : 0.0;
   j["wall_seconds"] = wall;
-  j["cpu_split"] = pm::apps::flow_cpu_split(ns.timings());
+  j["cpu_split"] = pm::apps::flow_cpu_split(ns.timings());  // this process's (a restarted run: since the restart)
+  j["restarts"] = ck.restarts();
   put_reference(j, s.test, s.mean_velocity == 2.0 && s.density == 1000.0 && s.viscosity == 1e-3);
   fl::PeriodicStats d, l;
   bool periodic = !failed && fl::period_stats(ts, drag, lift, 0, d, l);

@@ -5,7 +5,9 @@
 // Newmark SVK flag, IQN-ILS / Aitken / relaxation on the wet nodes' displacement, models/fsi/coupling.hpp).
 // Writes series.csv as the run goes (t, drag, lift, ux, uy of point A, the step's coupling evaluations, |r|,
 // int div u) and summary.json with the benchmark's mean and amplitude over the last period of uy(A)
-// (fsi::turek_hron_fsi_period), against Table 13. No checkpoints (as CFD3): a killed run keeps series.csv.
+// (fsi::turek_hron_fsi_period), against Table 13. Checkpoints and --restart (apps/turek_hron/loop_checkpoints.hpp):
+// the coupled model's state (TurekHronFsiTransient::save: fluid, mesh, solid, the coupling's IQN-ILS columns) and
+// the rows so far; a resumed run writes series.csv and summary.json as one never interrupted.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,14 +19,13 @@
 
 #include "apps/common/case.hpp"
 #include "apps/turek_hron/cases.hpp"
+#include "apps/turek_hron/loop_checkpoints.hpp"
 #include "fsi/turek_hron_fsi_transient.hpp"
 #include "io/progress.hpp"
 
 namespace polymech::apps {
 
 namespace {
-
-double cpu_since(std::clock_t c0) { return static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC; }
 
 // mean = (max + min) / 2, amplitude = (max - min) / 2 over every sample (a run too short for a period of uy)
 flow::PeriodicStats whole_run(const std::vector<fsi::TurekHronFsiStep>& rows, double fsi::TurekHronFsiStep::*field) {
@@ -46,16 +47,27 @@ void put_stats(nlohmann::json& j, const std::string& name, const flow::PeriodicS
 
 }  // namespace
 
-int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt) {
+int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& ropt) {
   const auto& s = scene.config;
   const std::string test = s.name();
   const std::int64_t steps = opt.steps > 0 ? opt.steps : s.steps();
   CaseSpec spec("turek_hron", scene.header, steps, s.dt);
-  spec.checkpoints = false;  // as CFD3: no restart; series.csv is written as the run goes
-  spec.progress = false;     // the loop below keeps its own io::Progress
-  Case cs(spec, opt, {});
-  const std::clock_t c0 = std::clock();
-  const auto w0 = std::chrono::steady_clock::now();
+  spec.progress = false;  // the loop below keeps its own io::Progress
+  Case cs(spec, opt, ropt);
+  // the run so far, into every checkpoint
+  std::vector<fsi::TurekHronFsiStep> rows;
+  rows.reserve(static_cast<std::size_t>(steps));
+  long evaluations = 0;
+  int max_evaluations = 0;
+  double max_div = 0.0;
+  double next_report = 0.5;
+  cs.records.add([&rows](models::Archive& a) { a.put_vector("turek_hron/rows", rows); },
+                 [&rows](const models::Archive& a) { rows = a.get_vector<fsi::TurekHronFsiStep>("turek_hron/rows"); });
+  cs.records.keep("turek_hron/evaluations", evaluations);
+  cs.records.keep("turek_hron/max_evaluations", max_evaluations);
+  cs.records.keep("turek_hron/max_div", max_div);
+  cs.records.keep("turek_hron/next_report", next_report);
+  LoopCheckpoints ck(cs);  // with --restart: the records above are the checkpoint's
   fsi::TurekHronFsiCase c = fsi::turek_hron_fsi_case(test, s.level);
   c.mean_velocity = s.mean_velocity;
   c.rho_f = s.density;
@@ -78,19 +90,22 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
                  static_cast<long long>(model.mesh_unknowns()), static_cast<long long>(model.solid_unknowns()), model.interface_nodes(), s.dt,
                  s.scene_dt, static_cast<long long>(steps), static_cast<double>(steps) * s.dt, s.coupling_method.c_str(), s.coupling_tolerance,
                  thread_count().c_str());
+  if (ck.resume()) model.load(*ck.resume(), "model/");
+  // series.csv: written as the run goes; a restarted run writes the rows of the steps before it again
   FILE* fp = std::fopen((cs.out() / "series.csv").c_str(), "w");
   if (!fp) throw std::runtime_error("cannot write " + (cs.out() / "series.csv").string());
   std::fprintf(fp, "t,drag,lift,ux,uy,evaluations,residual,int_div_u\n");
-  std::vector<fsi::TurekHronFsiStep> rows;
-  rows.reserve(static_cast<std::size_t>(steps));
+  auto write_row = [&](std::int64_t k, const fsi::TurekHronFsiStep& r) {
+    if (k % s.sample_every == 0)
+      std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%d,%.3e,%.3e\n", r.t, r.drag, r.lift, r.ux, r.uy, r.evaluations, r.residual,
+                   r.net_flux);
+  };
+  for (std::size_t i = 0; i < rows.size(); ++i) write_row(static_cast<std::int64_t>(i) + 1, rows[i]);
   io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
+  progress.resume_at(ck.first_step());
   bool failed = false;
   std::string reason;
-  long evaluations = 0;
-  int max_evaluations = 0;
-  double max_div = 0.0;
-  double next_report = 0.5;
-  for (std::int64_t k = 1; k <= steps; ++k) {
+  for (std::int64_t k = ck.first_step() + 1; k <= steps; ++k) {
     fsi::TurekHronFsiStep r;
     try {
       r = model.step();
@@ -108,23 +123,22 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
     evaluations += r.evaluations;
     max_evaluations = std::max(max_evaluations, r.evaluations);
     max_div = std::max(max_div, std::abs(r.net_flux));
-    if (k % s.sample_every == 0)
-      std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%d,%.3e,%.3e\n", r.t, r.drag, r.lift, r.ux, r.uy, r.evaluations, r.residual,
-                   r.net_flux);
+    write_row(k, r);
     if (k % 20 == 0) std::fflush(fp);
     progress.update(k);
     if (!opt.quiet && r.t >= next_report - 1e-9) {
       std::fprintf(stderr, "  t = %.2f s: ux(A) %.4e, uy(A) %.4e m, drag %.3f, lift %.3f N/m; %.2f evaluations per step; CPU %.0f s "
                    "(%.3f s per step)\n", r.t, r.ux, r.uy, r.drag, r.lift, static_cast<double>(evaluations) / static_cast<double>(k),
-                   cpu_since(c0), cpu_since(c0) / static_cast<double>(k));
+                   ck.cpu_seconds(), ck.cpu_seconds() / static_cast<double>(k));
       next_report += 0.5;
     }
+    ck.after_step(k, steps, [&](models::Archive& a) { model.save(a, "model/"); });
   }
   std::fclose(fp);
   const auto done = static_cast<std::int64_t>(rows.size());
   progress.done(done);
-  const double cpu = cpu_since(c0);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  const double cpu = ck.cpu_seconds();  // the interrupted processes' included
+  const double wall = ck.wall_seconds();
   const auto& t = model.timings();
   nlohmann::json j = cs.summary();
   j["test"] = test;
@@ -155,7 +169,8 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   j["cpu_seconds_per_step"] = done > 0 ? cpu / static_cast<double>(done) : 0.0;
   j["wall_seconds"] = wall;
   j["cpu_split"] = {{"setup", t.setup}, {"mesh_motion", t.mesh}, {"fluid", t.fluid}, {"solid", t.solid}};
-  j["fluid_split"] = flow_cpu_split(model.fluid().timings());
+  j["fluid_split"] = flow_cpu_split(model.fluid().timings());  // this process's (a restarted run: since the restart)
+  j["restarts"] = ck.restarts();
   j["reference"] = {{"source", "Turek & Hron 2006, Table 13"},
                     {"ux_mean", ref.ux_mean}, {"ux_amplitude", ref.ux_amplitude}, {"uy_mean", ref.uy_mean},
                     {"uy_amplitude", ref.uy_amplitude}, {"drag_mean", ref.drag_mean}, {"drag_amplitude", ref.drag_amplitude},

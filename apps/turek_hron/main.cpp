@@ -16,6 +16,7 @@
 //                 code 1 when the coupling stops.
 //   turek_hron [--scene scenes/flow/cfd1.toml] [--out out/turek_hron] [--accuracy draft|standard|paper]
 //              [--steps N] [--dry-run] [--threads 1]
+//              [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]   (the time-dependent cfd3, fsi2, fsi3)
 #include <stdexcept>
 #include <string>
 
@@ -30,16 +31,21 @@ int main(int argc, char** argv) {
                "steady FSI1 and periodic FSI2, FSI3 with the elastic flag (Taylor-Hood Navier-Stokes, partitioned coupling, issue 36)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/flow/cfd1.toml", "out/turek_hron");
+  pm::apps::RestartOptions ropt;
+  pm::apps::add_restart_options(app, ropt);
   if (const auto rc = pm::apps::parse_command_line(app, "turek_hron", argc, argv)) return *rc;
   return pm::apps::guarded("turek_hron", [&] {
     const auto scene = pm::io::load_flow_scene(opt.scene, {opt.accuracy, opt.precision});
     const bool transient = scene.config.transient;
     if (!transient && opt.steps > 0)
       throw std::invalid_argument("--steps " + std::to_string(opt.steps) + ": does not apply: a steady test (cfd1, cfd2, fsi1) has no time steps");
+    if (!transient && !ropt.restart.empty())
+      throw std::invalid_argument("--restart: " + opt.scene.string() + " is a steady test (cfd1, cfd2, fsi1: one solve, nothing to resume)");
     const auto cost = transient ? pm::apps::with_steps(scene.cost, scene.config.steps(), opt.steps) : scene.cost;
     if (pm::apps::announce_cost("turek_hron", scene.header, cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
-    if (scene.config.fsi) return transient ? pm::apps::run_turek_hron_fsi_transient(scene, opt) : pm::apps::run_turek_hron_fsi1(scene, opt);
-    return transient ? pm::apps::run_turek_hron_transient(scene, opt) : pm::apps::run_turek_hron_steady(scene, opt);
+    if (scene.config.fsi)
+      return transient ? pm::apps::run_turek_hron_fsi_transient(scene, opt, ropt) : pm::apps::run_turek_hron_fsi1(scene, opt);
+    return transient ? pm::apps::run_turek_hron_transient(scene, opt, ropt) : pm::apps::run_turek_hron_steady(scene, opt);
   });
 }

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <functional>
@@ -30,6 +31,8 @@
 #include <vector>
 
 #include <Eigen/Dense>
+
+#include "common/archive.hpp"
 
 namespace polymech::fsi {
 
@@ -157,6 +160,44 @@ class InterfaceCoupling {
     res.reason = "no convergence in " + std::to_string(o_.max_iterations) + " evaluations (|r| = " + format(res.residual) +
                  ", the tolerance " + format(o_.tolerance) + " relative)";
     return res;
+  }
+
+  // The state carried from one time step to the next (Aitken's last omega, IQN-ILS's kept columns, newest step
+  // first) into a checkpoint and back: a run resumed from it iterates exactly as one never interrupted.
+  void save(models::Archive& a, const std::string& prefix) const {
+    a.put(prefix + "omega", omega_);
+    a.put(prefix + "steps", static_cast<std::uint64_t>(old_V_.size()));
+    for (std::size_t s = 0; s < old_V_.size(); ++s) {
+      std::vector<double> v, w;
+      for (std::size_t j = 0; j < old_V_[s].size(); ++j) {
+        v.insert(v.end(), old_V_[s][j].data(), old_V_[s][j].data() + old_V_[s][j].size());
+        w.insert(w.end(), old_W_[s][j].data(), old_W_[s][j].data() + old_W_[s][j].size());
+      }
+      a.put(prefix + std::to_string(s) + "/columns", static_cast<std::uint64_t>(old_V_[s].size()));
+      a.put_vector(prefix + std::to_string(s) + "/V", v);
+      a.put_vector(prefix + std::to_string(s) + "/W", w);
+    }
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    omega_ = a.get<double>(prefix + "omega");
+    old_V_.clear();
+    old_W_.clear();
+    const auto steps = a.get<std::uint64_t>(prefix + "steps");
+    for (std::uint64_t s = 0; s < steps; ++s) {
+      const auto m = a.get<std::uint64_t>(prefix + std::to_string(s) + "/columns");
+      const auto v = a.get_vector<double>(prefix + std::to_string(s) + "/V");
+      const auto w = a.get_vector<double>(prefix + std::to_string(s) + "/W");
+      if (v.size() != w.size() || (m == 0 ? !v.empty() : v.size() % m != 0))
+        throw std::runtime_error("checkpoint: " + prefix + std::to_string(s) + ": the coupling's columns do not fit");
+      const std::size_t n = m == 0 ? 0 : v.size() / m;
+      std::vector<Eigen::VectorXd> V, W;
+      for (std::size_t j = 0; j < m; ++j) {
+        V.push_back(Eigen::Map<const Eigen::VectorXd>(v.data() + j * n, static_cast<Eigen::Index>(n)));
+        W.push_back(Eigen::Map<const Eigen::VectorXd>(w.data() + j * n, static_cast<Eigen::Index>(n)));
+      }
+      old_V_.push_back(std::move(V));
+      old_W_.push_back(std::move(W));
+    }
   }
 
   // Columns kept from earlier time steps (iqn_ils).

@@ -49,6 +49,7 @@
 
 #include "common/host_copy.hpp"
 #include "flow/analysis.hpp"
+#include "flow/time_state_archive.hpp"
 #include "fsi/turek_hron_fsi.hpp"
 
 namespace polymech::fsi {
@@ -113,6 +114,45 @@ class TurekHronFsiTransient : public TurekHronFsi {
   double dt() const { return dt_; }
   const CouplingResult& last_coupling() const { return last_; }
   std::int64_t point_a() const { return point_a_; }
+
+  // The state one step hands to the next, into a checkpoint (apps/turek_hron/fsi_transient.cpp) and back: the
+  // fluid's time state (its mesh is X + d_n), the mesh displacement at t_n and t_n-1 and the wet nodes' x_n, the
+  // solid's Newmark u_n, v_n, a_n (its displacement, the Newton start, is u_n), the coupling's Aitken omega and
+  // IQN-ILS columns, the counts. load() on a model built from the same case and dt continues bitwise, but for the
+  // solid Newton test's floor 1e-2 max F_ref over the run (solid::NewtonSolid's private f_ref_max_, restarting at
+  // 0): it only decides while the flag's loads and reaction are below 1 % of their largest so far.
+  void save(models::Archive& a, const std::string& prefix) const {
+    flow::save_time_state(a, prefix + "fluid/", fluid_->time_state());
+    a.put_vector(prefix + "u_n", u_n_);
+    a.put_vector(prefix + "v_n", v_n_);
+    a.put_vector(prefix + "a_n", a_n_);
+    a.put_vector(prefix + "d_n", d_n_);
+    a.put_vector(prefix + "d_m", d_m_);
+    a.put_vector(prefix + "x_n", x_n_);
+    a.put(prefix + "timings", timings_);
+    coupling_.save(a, prefix + "coupling/");
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    auto same = [&](const std::vector<double>& v, const std::vector<double>& like, const char* what) {
+      if (v.size() != like.size())
+        throw std::runtime_error("checkpoint: " + prefix + what + " has " + std::to_string(v.size()) + " values, this model " +
+                                 std::to_string(like.size()));
+      return v;
+    };
+    u_n_ = same(a.get_vector<double>(prefix + "u_n"), u_n_, "u_n");
+    v_n_ = same(a.get_vector<double>(prefix + "v_n"), v_n_, "v_n");
+    a_n_ = same(a.get_vector<double>(prefix + "a_n"), a_n_, "a_n");
+    d_n_ = same(a.get_vector<double>(prefix + "d_n"), d_n_, "d_n");
+    d_m_ = same(a.get_vector<double>(prefix + "d_m"), d_m_, "d_m");
+    x_n_ = same(a.get_vector<double>(prefix + "x_n"), x_n_, "x_n");
+    timings_ = a.get<TurekHronFsiTimings>(prefix + "timings");
+    coupling_.load(a, prefix + "coupling/");
+    fluid_->set_time_state(flow::load_time_state(a, prefix + "fluid/"));
+    fluid_->set_coordinates(motion_->coordinates(d_n_));  // the fluid's mesh at t_n, as the last step left it
+    // the solid's displacement (its Newton start) is u_n: written through the View handle (Kokkos::deep_copy
+    // into a View held by const reference writes its data)
+    Kokkos::deep_copy(solid_->displacement(), models::to_device<double>("polymech::fsi::restart_displacement", u_n_));
+  }
 
   // One coupled step; throws std::runtime_error when the coupling or a sub-solver fails.
   TurekHronFsiStep step() {
