@@ -56,10 +56,16 @@ const std::vector<SceneKind>& scene_kinds() {
        [](const std::filesystem::path& f) { load_isph_scene(f); },
        [](const std::filesystem::path&) { return std::string("isph"); },
        [](const std::filesystem::path& f) { return load_isph_scene(f).cost; }},
-      {"solid", "finite-element solids: the 8YSZ micro-cantilever, Hill plasticity, inverse study (seed 002 paper 5)",
-       {"micro_cantilever"}, [](const std::filesystem::path& f) { load_solid_scene(f); },
-       [](const std::filesystem::path&) { return std::string("micro_cantilever"); },
-       [](const std::filesystem::path& f) { return load_solid_scene(f).cost; }},
+      {"solid", "finite-element solids: the 8YSZ micro-cantilever, Hill plasticity, inverse study (seed 002 paper 5); Cook's membrane",
+       {"micro_cantilever", "cook_membrane"},
+       [](const std::filesystem::path& f) {
+         if (solid_app(f) == "cook_membrane")
+           load_cook_scene(f);
+         else
+           load_solid_scene(f);
+       },
+       solid_app,
+       [](const std::filesystem::path& f) { return solid_app(f) == "cook_membrane" ? load_cook_scene(f).cost : load_solid_scene(f).cost; }},
       {"piezo", "finite-element piezoelectric harvester: static bender, load/frequency sweep, transient (seed 002 paper 1)",
        {"piezo_harvester"}, [](const std::filesystem::path& f) { load_piezo_scene(f); },
        [](const std::filesystem::path&) { return std::string("piezo_harvester"); },

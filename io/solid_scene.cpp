@@ -161,6 +161,9 @@ SolidScene load_solid_scene(const std::filesystem::path& file, const SceneOption
   const OpenScene s = open_scene(file, "solid", solid::effect_table(), options.precision);
   out.header = s.header;
   const SceneTable& root = s.root;
+  if (const auto c = root.optional_table("case"))
+    c->fail_table("belongs to another solid case (Cook's membrane: run it with the cook_membrane app, or `polymech "
+                  "--scene`); the micro-cantilever's scenes have no [case] table");
   s.model.finish();
   out.plasticity = out.header.effects.has("plasticity");
   out.header.set_accuracy(read_accuracy(root, options.accuracy, 0.0, "standard"));
@@ -294,6 +297,73 @@ SolidScene load_solid_scene(const std::filesystem::path& file, const SceneOption
     out.inverse_cost = solid_scene_cost(out, out.beam.angles.size(), true);
     check_size(out.inverse_cost, root.table("inverse"));
   }
+  return out;
+}
+
+std::string solid_app(const std::filesystem::path& file) {
+  const auto c = Scene::load(file).root().optional_table("case");
+  return c && c->choice("test", {"cook_membrane"}) == "cook_membrane" ? "cook_membrane" : "micro_cantilever";
+}
+
+CookScene load_cook_scene(const std::filesystem::path& file, const SceneOptions& options) {
+  CookScene out;
+  const OpenScene s = open_scene(file, "solid", solid::effect_table(), options.precision);
+  out.header = s.header;
+  const SceneTable& root = s.root;
+  if (out.header.effects.has("plasticity"))
+    s.model.fail("effects", "lists \"plasticity\": Cook's membrane here is linear elastic; allowed: effects = []");
+  s.model.finish();
+  out.header.set_accuracy(read_accuracy(root, options.accuracy, 0.0, "standard"));
+  {
+    const SceneTable t = root.table("case");
+    t.choice("test", {"cook_membrane"});
+    t.finish();
+  }
+  {
+    const SceneTable t = root.table("material");
+    out.young = t.real("youngs_modulus", out.young, Range{0.0, 1e12, true, false, "(Young's modulus, any consistent unit)"});
+    out.poisson = t.real("poisson_ratio", out.poisson, Range{-1.0, 0.5, true, true, "(Poisson's ratio)"});
+    out.plane = t.choice("plane", {"stress", "strain"}, out.plane);
+    t.finish();
+  }
+  {
+    const SceneTable t = root.table("load");
+    out.traction = t.real("shear_traction", out.traction, Range{-1e12, 1e12, false, false, "(the shear traction on the edge x = 48)"});
+    if (out.traction == 0.0) t.fail("shear_traction", "= 0: the membrane would not move; allowed: a non-zero traction");
+    t.finish();
+  }
+  {
+    const SceneTable t = root.table("mesh");
+    out.order = static_cast<int>(t.integer("order", out.order, 1, 4));
+    const int n = static_cast<int>(t.integer("cells", 32, 1, 4096));
+    out.cells = std::max(1, static_cast<int>(std::lround(n / out.header.coarsening)));
+    t.finish();
+  }
+  if (const auto t = root.optional_table("solver")) {
+    out.solver = t->choice("kind", {"direct", "cg"}, out.solver);
+    out.tolerance = t->real("tolerance", out.tolerance, Range{1e-14, 1e-2, false, false, "(CG's relative residual)"});
+    if (out.solver == "direct" && t->has("tolerance"))
+      t->fail("tolerance", "applies to kind = \"cg\"; the direct solve has none");
+    t->finish();
+  }
+  root.finish();
+  // cost: nodes (p n + 1)^2, two DoFs each; the host sparse LU of the 2D system measured 1.0 s at 33 282 DoFs of
+  // order 2 and 4.0 s at order 4 (docs/figures/fe/sweep_solid_cook.csv, one thread), growing like DoFs^1.6
+  const double side = static_cast<double>(out.order) * out.cells + 1.0;
+  CostEstimate& c = out.cost;
+  c.method = std::string("FE solid, Cook's membrane, order ") + std::to_string(out.order) + ", plane " + out.plane;
+  c.item_name = "DoFs";
+  c.items = 2.0 * side * side;
+  c.max_items = static_cast<double>(std::numeric_limits<std::int32_t>::max());
+  c.steps = 1;
+  c.step_name = out.solver == "direct" ? "direct solve" : "CG solve";
+  const double q = static_cast<double>(out.order) / 2.0;
+  c.bytes = 20e6 + c.items * 2e3 * q * q;
+  c.seconds = 0.05 + 1.0 * std::pow(c.items / 33282.0, 1.6) * q * q * (out.solver == "cg" ? 3.0 : 1.0);
+  c.rate = "1.0 s x (DoFs / 33 282)^1.6 x (order / 2)^2 (the direct solve; CG x 3), docs/figures/fe/sweep_solid_cook.csv";
+  c.rate_threads = 1;
+  c.size_keys = {"mesh.cells = " + std::to_string(out.cells) + " (after the preset)", "mesh.order = " + std::to_string(out.order)};
+  check_size(c, root.table("mesh"));
   return out;
 }
 

@@ -106,4 +106,27 @@ CostEstimate solid_scene_cost(const SolidScene& s, std::size_t angles, bool inve
 
 SolidScene load_solid_scene(const std::filesystem::path& file, const SceneOptions& options = {});
 
+// Cook's membrane (issue 34's verification case; models/solid/cases.hpp): a solid scene with
+//   [case]     test = "cook_membrane"
+//   [material] youngs_modulus, poisson_ratio (< 0.5), plane = "stress" | "strain"
+//   [load]     shear_traction (on the edge x = 48)
+//   [mesh]     order 1..4, cells (per side at accuracy "paper"; standard / 2, draft / 4, at least 1)
+//   [solver]   kind = "direct" (host sparse LU) | "cg" (matrix-free Jacobi CG), tolerance (cg)
+// run by apps/cook_membrane. Linear elastic only: model.effects must be empty.
+struct CookScene {
+  SceneHeader header;
+  int order = 2, cells = 16;
+  double young = 70.0, poisson = 1.0 / 3.0, traction = 6250.0;
+  std::string plane = "stress";
+  std::string solver = "direct";
+  double tolerance = 1e-10;
+  CostEstimate cost;
+};
+
+CookScene load_cook_scene(const std::filesystem::path& file, const SceneOptions& options = {});
+
+// The app of a solid scene, read off its text: "cook_membrane" when [case] test = "cook_membrane", else
+// "micro_cantilever".
+std::string solid_app(const std::filesystem::path& file);
+
 }  // namespace polymech::io

@@ -34,7 +34,8 @@ APPS = {
     "efg": ("efg", lambda s: True),
     "helmholtz": ("helmholtz", lambda s: True),
     "turek_hron": ("flow", lambda s: True),
-    "micro_cantilever": ("solid", lambda s: True),
+    "micro_cantilever": ("solid", lambda s: not s.startswith("cook")),
+    "cook_membrane": ("solid", lambda s: s.startswith("cook")),
 }
 
 

@@ -32,6 +32,7 @@ APPS = {
     "isph": "scenes/isph/hydrostatic.toml",
     "piezo_harvester": "scenes/piezo/pvdf_bender.toml",
     "turek_hron": "scenes/flow/cfd1.toml",
+    "cook_membrane": "scenes/solid/cook_membrane.toml",
     "polymech": "scenes/pd/tension_lattice.toml",  # run by pd_tension
 }
 DISPATCHED = {"polymech": "pd_tension"}  # the app that reports the options polymech hands on
@@ -40,6 +41,7 @@ DISPATCHED = {"polymech": "pd_tension"}  # the app that reports the options poly
 # hidden from --help, refused with exit 2 even with --dry-run, never accepted and ignored
 REFUSED = {
     "helmholtz": [(["--steps", "5"], "--steps 5: does not apply: a frequency-domain solve", True)],
+    "cook_membrane": [(["--steps", "5"], "--steps 5: does not apply: Cook's membrane is one linear solve", True)],
     "pd_tension": [(["--steps", "5"], "--steps 5: does not apply: the pull lasts", True)],
     "dem_benchmark": [(["--steps", "5"], "--steps 5: does not apply", True),
                       (["--accuracy", "draft"], "--accuracy draft: does not apply", True)],

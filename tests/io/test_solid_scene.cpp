@@ -101,6 +101,7 @@ TEST(SolidScenes, ShippedScenesLoad) {
     if (e.path().extension() != ".toml") continue;
     SCOPED_TRACE(e.path().string());
     EXPECT_EQ(io::scene_kind_of(e.path()).kind, "solid");
+    if (e.path().stem() == "cook_membrane") continue;  // CookScenes.* below
     EXPECT_EQ(io::scene_kind_of(e.path()).app_for(e.path()), "micro_cantilever");
     const auto s = io::load_solid_scene(e.path());
     EXPECT_TRUE(s.plasticity);
@@ -252,4 +253,55 @@ TEST(SolidScenes, BadInverseTablesAreRefused) {
   elastic = replace_once(elastic, "yield_stress = 3.0\nhardening_exponent = 0.1\nR12 = 0.9\n", "");
   expect_error(elastic, "[inverse]\n", {"[inverse]: needs the effect \"plasticity\""});
   expect_edit_error("R12 = 0.9", "R12 = 0.9\nhill_form = \"as_printed\"", {"key 'crystal.hill_form'", "estimator uses \"yield_stress_ratio\""});
+}
+
+// Cook's membrane (apps/cook_membrane): the shipped scene goes to its app, the presets divide the cells, and
+// the loader refuses plasticity, nu = 0.5 and a tolerance for the direct solve naming the line and key.
+TEST(CookScenes, ShippedSceneLoadsWithItsPresets) {
+  const fs::path f = source_dir() / "scenes" / "solid" / "cook_membrane.toml";
+  EXPECT_EQ(io::scene_kind_of(f).app_for(f), "cook_membrane");
+  const int cells[3] = {16, 32, 64};
+  const char* presets[3] = {"draft", "standard", "paper"};
+  for (int k = 0; k < 3; ++k) {
+    io::SceneOptions o;
+    o.accuracy = presets[k];
+    const auto s = io::load_cook_scene(f, o);
+    EXPECT_EQ(s.cells, cells[k]);
+    EXPECT_EQ(s.order, 2);
+    EXPECT_EQ(s.plane, "stress");
+    EXPECT_DOUBLE_EQ(s.traction, 6250.0);
+    EXPECT_DOUBLE_EQ(s.cost.items, 2.0 * (2.0 * cells[k] + 1.0) * (2.0 * cells[k] + 1.0));
+    EXPECT_GT(s.cost.seconds, 0.0);
+  }
+}
+
+TEST(CookScenes, RefusesWhatItCannotRun) {
+  const std::string base = R"(title = "cook"
+
+[model]
+kind = "solid"
+effects = []
+
+[case]
+test = "cook_membrane"
+
+[material]
+poisson_ratio = 0.3
+
+[load]
+shear_traction = 1.0
+
+[mesh]
+cells = 4
+
+[solver]
+kind = "direct"
+)";
+  const auto refused = [](const std::string& text, const std::string& at, const std::vector<std::string>& fragments) {
+    polymech::testing::expect_load_error(text, [](const fs::path& p) { io::load_cook_scene(p); }, line_of(text, at), fragments);
+  };
+  refused(replace_once(base, "poisson_ratio = 0.3", "poisson_ratio = 0.5"), "poisson_ratio = 0.5", {"poisson_ratio", "0.5"});
+  refused(replace_once(base, "effects = []", "effects = [\"plasticity\"]"), "effects = [\"plasticity\"]", {"effects", "linear elastic"});
+  refused(replace_once(base, "kind = \"direct\"", "kind = \"direct\"\ntolerance = 1e-8"), "tolerance = 1e-8", {"tolerance", "cg"});
+  refused(replace_once(base, "shear_traction = 1.0", "shear_traction = 0.0"), "shear_traction = 0.0", {"shear_traction", "non-zero"});
 }
