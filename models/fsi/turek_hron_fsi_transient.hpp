@@ -118,9 +118,8 @@ class TurekHronFsiTransient : public TurekHronFsi {
   // The state one step hands to the next, into a checkpoint (apps/turek_hron/fsi_transient.cpp) and back: the
   // fluid's time state (its mesh is X + d_n), the mesh displacement at t_n and t_n-1 and the wet nodes' x_n, the
   // solid's Newmark u_n, v_n, a_n (its displacement, the Newton start, is u_n), the coupling's Aitken omega and
-  // IQN-ILS columns, the counts. load() on a model built from the same case and dt continues bitwise, but for the
-  // solid Newton test's floor 1e-2 max F_ref over the run (solid::NewtonSolid's private f_ref_max_, restarting at
-  // 0): it only decides while the flag's loads and reaction are below 1 % of their largest so far.
+  // IQN-ILS columns, the counts, the solid Newton test's largest reference force so far (its floor is 1e-2 of
+  // it). load() on a model built from the same case and dt continues bitwise.
   void save(models::Archive& a, const std::string& prefix) const {
     flow::save_time_state(a, prefix + "fluid/", fluid_->time_state());
     a.put_vector(prefix + "u_n", u_n_);
@@ -130,6 +129,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
     a.put_vector(prefix + "d_m", d_m_);
     a.put_vector(prefix + "x_n", x_n_);
     a.put(prefix + "timings", timings_);
+    a.put(prefix + "solid_reference_force_max", solid_->reference_force_max());
     coupling_.save(a, prefix + "coupling/");
   }
   void load(const models::Archive& a, const std::string& prefix) {
@@ -146,6 +146,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
     d_m_ = same(a.get_vector<double>(prefix + "d_m"), d_m_, "d_m");
     x_n_ = same(a.get_vector<double>(prefix + "x_n"), x_n_, "x_n");
     timings_ = a.get<TurekHronFsiTimings>(prefix + "timings");
+    solid_->set_reference_force_max(a.get<double>(prefix + "solid_reference_force_max"));
     coupling_.load(a, prefix + "coupling/");
     fluid_->set_time_state(flow::load_time_state(a, prefix + "fluid/"));
     fluid_->set_coordinates(motion_->coordinates(d_n_));  // the fluid's mesh at t_n, as the last step left it

@@ -151,6 +151,10 @@ class NewtonSolid : public SolidProblem<T, D> {
   NewtonOptions& options() { return options_; }
   const NewtonOptions& options() const { return options_; }
   double load_factor() const { return lambda_; }
+  // The largest reference force of the converged steps so far (the convergence test's floor is 1e-2 of it):
+  // part of the driver's state a checkpoint keeps (models/fsi/turek_hron_fsi_transient.hpp).
+  double reference_force_max() const { return f_ref_max_; }
+  void set_reference_force_max(double f) { f_ref_max_ = f; }
   const View1<T>& displacement() const { return u_; }
   std::vector<double> displacement_host() const { return models::to_host(u_); }
   // f_int of the last evaluation (every DoF: on the constrained rows the reactions).
