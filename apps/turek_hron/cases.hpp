@@ -24,6 +24,18 @@ inline void put_steady_force(nlohmann::json& j, const std::string& name, double 
   j[name + "_error"] = value / reference - 1.0;
 }
 
+// An FSI case's sizes: the mesh level, fluid cells and unknowns, the mesh motion's and the solid's unknowns,
+// the wet interface nodes (FSI1 and FSI2/FSI3 summaries; Model: fsi::TurekHronFsi or its transient form).
+template <class Model>
+void put_fsi_sizes(nlohmann::json& j, const Model& model, int level) {
+  j["level"] = level;
+  j["cells"] = model.fluid().mesh().element_count();
+  j["unknowns"] = model.fluid_unknowns();
+  j["mesh_unknowns"] = model.mesh_unknowns();
+  j["solid_unknowns"] = model.solid_unknowns();
+  j["interface_nodes"] = model.interface_nodes();
+}
+
 // The flow solve's CPU split (process seconds per part, the assembly and factorisation counts).
 inline nlohmann::json flow_cpu_split(const flow::FlowTimings& t) {
   return {{"element_kernel", t.element_kernel}, {"scatter", t.scatter}, {"lu_factor", t.factor},

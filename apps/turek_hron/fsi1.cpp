@@ -57,12 +57,7 @@ int run_turek_hron_fsi1(const io::FlowScene& scene, const CommonOptions& opt) {
   nlohmann::json j = cs.summary();
   j["test"] = "fsi1";
   j["analysis"] = "steady";
-  j["level"] = s.level;
-  j["cells"] = model.fluid().mesh().element_count();
-  j["unknowns"] = model.fluid_unknowns();
-  j["mesh_unknowns"] = model.mesh_unknowns();
-  j["solid_unknowns"] = model.solid_unknowns();
-  j["interface_nodes"] = model.interface_nodes();
+  put_fsi_sizes(j, model, s.level);
   j["converged"] = converged;
   if (!converged) j["reason"] = reason;
   j["ux_A"] = r.ux;

@@ -143,12 +143,7 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   nlohmann::json j = cs.summary();
   j["test"] = test;
   j["analysis"] = "transient";
-  j["level"] = s.level;
-  j["cells"] = model.fluid().mesh().element_count();
-  j["unknowns"] = model.fluid_unknowns();
-  j["mesh_unknowns"] = model.mesh_unknowns();
-  j["solid_unknowns"] = model.solid_unknowns();
-  j["interface_nodes"] = model.interface_nodes();
+  put_fsi_sizes(j, model, s.level);
   j["dt"] = s.dt;
   j["dt_paper"] = s.scene_dt;
   j["ramp_time"] = s.ramp_time;
