@@ -5,6 +5,8 @@ namespace polymech::helmholtz {
 
 template class HelmholtzOperator<double>;
 template class HelmholtzOperator<float>;
+template struct Discretization<double>;
+template struct Discretization<float>;
 template class Helmholtz<double>;
 template class Helmholtz<float>;
 

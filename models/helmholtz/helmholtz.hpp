@@ -14,9 +14,9 @@
 //   vibrating  vibrating boundaries, eqs. (8), (20)
 // Rigid boundaries (dPhi/dn = 0) are natural and cost nothing.
 //
-// The class and its constructor, in named steps, are here; the parts: element_data.hpp (chunks, colours,
-// element DoFs, geometry), boundary.hpp (Dirichlet, impedance and vibrating faces), operator.hpp (the
-// matrix-free operator of eq. (16)), solve.hpp (right-hand side, COCG, results), preconditioners.hpp.
+// The class is here; the parts: discretization.hpp (one order's numbering, part, elements, faces and
+// operator, built in named steps from element_data.hpp, boundary.hpp and operator.hpp), solve.hpp
+// (right-hand side, COCG, results), preconditioners.hpp (which build coarser orders' discretizations).
 #pragma once
 
 #include <algorithm>
@@ -29,21 +29,11 @@
 #include "common/host_copy.hpp"
 #include "fem/l2_error.hpp"
 #include "helmholtz/analytic.hpp"
-#include "helmholtz/boundary.hpp"
 #include "helmholtz/config.hpp"
-#include "helmholtz/distribute.hpp"
+#include "helmholtz/discretization.hpp"
 #include "helmholtz/effect_table.hpp"
-#include "helmholtz/dofs.hpp"
-#include "helmholtz/element_data.hpp"
-#include "helmholtz/operator.hpp"
-#include "helmholtz/parallel.hpp"
-#include "solvers/krylov.hpp"
-
-namespace polymech::helmholtz {
-template <class T>
-class Helmholtz;
-}
 #include "helmholtz/preconditioners.hpp"
+#include "solvers/krylov.hpp"
 
 namespace polymech::helmholtz {
 
@@ -71,9 +61,10 @@ class Helmholtz {
   // Host copies for output.
   std::vector<std::complex<double>> host_solution() const;
   std::vector<std::complex<double>> host_analytic() const {
-    std::vector<std::complex<double>> out(static_cast<std::size_t>(dofs_.count));
+    std::vector<std::complex<double>> out(static_cast<std::size_t>(d_.dofs.count));
+    const auto& X = d_.dofs.coordinates;
     for (std::size_t i = 0; i < out.size(); ++i) {
-      const auto v = field_(dofs_.coordinates[3 * i], dofs_.coordinates[3 * i + 1], dofs_.coordinates[3 * i + 2]);
+      const auto v = field_(X[3 * i], X[3 * i + 1], X[3 * i + 2]);
       out[i] = {v.real(), v.imag()};
     }
     return out;
@@ -81,46 +72,38 @@ class Helmholtz {
 
   // Description of the discrete problem for the assembled reference (assembled.hpp).
   FaceTerm face_term(BoundaryKind kind) const { return helmholtz::face_term(cfg_, kind); }
-  std::vector<char> constrained_mask() const;
+  std::vector<char> constrained_mask() const { return d_.constrained_mask(); }
 
   const Config& config() const { return cfg_; }
-  const HexDofs& dofs() const { return dofs_; }
-  const HelmholtzOperator<T>& op() const { return op_; }
+  const HexDofs& dofs() const { return d_.dofs; }
+  const HelmholtzOperator<T>& op() const { return d_.op; }
+  const Discretization<T>& discretization() const { return d_; }
   const View1<C>& solution() const { return solution_; }
   const solvers::SolveResult& result() const { return result_; }
   const AnalyticField& analytic() const { return field_; }
-  Index dof_count() const { return static_cast<Index>(dofs_.count); }  // global
+  Index dof_count() const { return static_cast<Index>(d_.dofs.count); }  // global
   Index element_count() const { return static_cast<Index>(cfg_.mesh.element_count()); }  // global
   // Domain decomposition: this rank's part.
-  int rank() const { return comm_->rank(); }
-  int ranks() const { return comm_->size(); }
-  const PartLayout& part() const { return layout_; }
-  const Communicator& communicator() const { return *comm_; }
-  Index local_element_count() const { return el_.elements(); }
-  int colors() const { return el_.colors(); }
-  Index constrained_count() const { return static_cast<Index>(constrained_.extent(0)); }
-  Index impedance_face_count() const { return op_.impedance_faces().faces(); }
-  Index vibrating_face_count() const { return vibrating_.faces(); }
-  double min_jacobian_ratio() const { return jacobian_.min_ratio; }
+  int rank() const { return d_.comm->rank(); }
+  int ranks() const { return d_.comm->size(); }
+  const PartLayout& part() const { return d_.layout; }
+  const Communicator& communicator() const { return *d_.comm; }
+  Index local_element_count() const { return d_.el.elements(); }
+  int colors() const { return d_.el.colors(); }
+  Index constrained_count() const { return static_cast<Index>(d_.constrained.extent(0)); }
+  Index impedance_face_count() const { return d_.op.impedance_faces().faces(); }
+  Index vibrating_face_count() const { return d_.vibrating.faces(); }
+  double min_jacobian_ratio() const { return d_.jacobian.min_ratio; }
   double setup_seconds() const { return setup_seconds_; }
   double solve_seconds() const { return solve_seconds_; }
   // Set-up of the last solve's preconditioner (chebyshev, pmg; included in solve_seconds) and what it was.
   double preconditioner_seconds() const { return preconditioner_seconds_; }
   const std::string& preconditioner_description() const { return preconditioner_; }
-  const View1<Index>& constrained_dofs() const { return constrained_; }
+  const View1<Index>& constrained_dofs() const { return d_.constrained; }
   // DoFs per second of the operator, from `applies` timed applications (wall time) after one warm-up.
   double apply_rate(int applies) const;
   // Typical element size h = (bounding-box volume / elements)^(1/3) (the perturbation scale).
-  double mean_element_size() const {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (std::int64_t v = 0; v < cfg_.mesh.vertex_count(); ++v)
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], cfg_.mesh.vertices[3 * v + k]);
-        hi[k] = std::max(hi[k], cfg_.mesh.vertices[3 * v + k]);
-      }
-    const double vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-    return std::cbrt(vol / static_cast<double>(cfg_.mesh.element_count()));
-  }
+  double mean_element_size() const { return helmholtz::mean_element_size(cfg_.mesh); }
   // Pressure p = j omega rho Phi (eq. (4)).
   std::complex<double> pressure_factor() const { return {0.0, cfg_.omega() * cfg_.density}; }
 
@@ -152,34 +135,17 @@ class Helmholtz {
     }
   }
 
-  // The steps of the constructor.
-  void number_global_dofs(const std::vector<std::int64_t>& traversal);
-  void set_up_elements(const std::vector<char>& constrained);
-  fem::HexFaces<T, C> set_up_boundaries(const std::vector<char>& constrained);
-  void set_up_operator(const fem::HexFaces<T, C>& impedance);
-
   View1<C> jacobi_inverse_diagonal() const;  // solve.hpp
 
   std::string where(Index local_dof) const {  // coordinates of a local DoF
-    if (local_dof < 0 || local_dof >= static_cast<Index>(layout_.global_of_local.size())) return "";
-    const auto* p = &dofs_.coordinates[3 * static_cast<std::size_t>(layout_.global_of_local[local_dof])];
+    if (local_dof < 0 || local_dof >= static_cast<Index>(d_.layout.global_of_local.size())) return "";
+    const auto* p = &d_.dofs.coordinates[3 * static_cast<std::size_t>(d_.layout.global_of_local[local_dof])];
     return "at (" + models::format_g(p[0]) + ", " + models::format_g(p[1]) + ", " + models::format_g(p[2]) + ")";
   }
 
   Config cfg_;
   AnalyticField field_;
-  HexDofs dofs_;  // global numbering (every rank)
-  std::shared_ptr<const Communicator> comm_;
-  PartLayout layout_;  // this rank's elements and local DoFs
-  Kokkos::View<Index**, Kokkos::LayoutRight, MemSpace> error_dofs_;  // elements counted in eq. (28), local DoFs
-  std::vector<std::int64_t> element_order_;  // storage index -> mesh element
-  fem::HexElements<T> el_;
-  CoordinateView x_;
-  fem::JacobianCheck jacobian_;
-  fem::HexFaces<T, C> vibrating_;
-  View1<Index> constrained_;
-  View1<C> dirichlet_values_;
-  HelmholtzOperator<T> op_;
+  Discretization<T> d_;  // the scene's order on this rank's part
   View1<C> solution_;
   solvers::SolveResult result_;
   double setup_seconds_ = 0.0, solve_seconds_ = 0.0, preconditioner_seconds_ = 0.0;
@@ -189,73 +155,17 @@ class Helmholtz {
 // Member functions that launch kernels are defined out of the class (not inline), so the explicit
 // instantiation declarations below keep every other translation unit from instantiating them.
 
-// The model of one rank's part, eq. (16) ready to solve: the global DoF numbering, the part, its
-// Dirichlet mask, elements and geometry, boundary faces and the operator.
+// The model of one rank's part, eq. (16) ready to solve: its discretization (discretization.hpp) and the
+// solution vector.
 template <class T>
 Helmholtz<T>::Helmholtz(const Config& c) : cfg_(c) {
   const auto t0 = std::chrono::steady_clock::now();
   validate(c);
   field_ = AnalyticField::from(c);
-  const std::vector<std::int64_t> traversal = locality_order(c.mesh);
-  number_global_dofs(traversal);
-  // this rank's part: its elements, local DoFs (owned, then ghosts) and halo (distribute.hpp)
-  comm_ = c.communicator ? c.communicator : std::make_shared<SerialCommunicator>();
-  layout_ = make_part_layout(c.mesh, dofs_, traversal, comm_->rank(), comm_->size(), c.partition);
-  const std::vector<char> constrained = constrained_mask_of_part(c, dofs_, layout_);  // Dirichlet DoFs, local
-  set_up_elements(constrained);
-  const fem::HexFaces<T, C> impedance = set_up_boundaries(constrained);
-  set_up_operator(impedance);
+  d_ = Discretization<T>(c, field_);
+  solution_ = View1<C>("polymech::helmholtz::solution", static_cast<Index>(d_.layout.global_of_local.size()));
   Kokkos::fence();
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Every DoF of the mesh (every rank numbers them all), in the locality order; with
-// Config::node_perturbation, the interior nodes moved at random (a fraction of h / p).
-template <class T>
-void Helmholtz<T>::number_global_dofs(const std::vector<std::int64_t>& traversal) {
-  dofs_ = number_dofs(cfg_.mesh, cfg_.order, traversal);
-  if (cfg_.node_perturbation > 0) {
-    const auto ext = exterior_faces(cfg_.mesh);
-    perturb_nodes(dofs_, dofs_on_faces(dofs_, ext), cfg_.node_perturbation, mean_element_size() / cfg_.order);
-  }
-}
-
-// The part's elements in coloured chunks, their DoFs, the DoF coordinates and the geometry (element_data.hpp).
-template <class T>
-void Helmholtz<T>::set_up_elements(const std::vector<char>& constrained) {
-  ElementData<T> d = element_data<T>(cfg_, dofs_, layout_, constrained, *comm_);
-  element_order_ = std::move(d.order);
-  el_ = d.el;
-  x_ = d.x;
-  jacobian_ = d.jacobian;
-  error_dofs_ = d.error_dofs;
-}
-
-// The boundary faces of the enabled effects and the Dirichlet values (boundary.hpp); returns the
-// impedance faces, which the operator keeps.
-template <class T>
-auto Helmholtz<T>::set_up_boundaries(const std::vector<char>& constrained) -> fem::HexFaces<T, C> {
-  fem::HexFaces<T, C> impedance;
-  if (cfg_.effects.has("impedance"))
-    impedance = boundary_faces<T>(cfg_, dofs_, layout_, x_, BoundaryKind::impedance, constrained, "impedance");
-  if (cfg_.effects.has("vibrating"))
-    vibrating_ = boundary_faces<T>(cfg_, dofs_, layout_, x_, BoundaryKind::vibrating, constrained, "vibrating");
-  if (cfg_.effects.has("dirichlet")) {
-    const DirichletValues<T> d = dirichlet_values<T>(cfg_, field_, x_, constrained);
-    constrained_ = d.dofs;
-    dirichlet_values_ = d.values;
-  }
-  return impedance;
-}
-
-// The operator K = A - k^2 M + j rho omega C of eq. (16) (operator.hpp), its halo on several ranks.
-template <class T>
-void Helmholtz<T>::set_up_operator(const fem::HexFaces<T, C>& impedance) {
-  const double k = cfg_.wavenumber();
-  op_ = HelmholtzOperator<T>(el_, impedance, constrained_, static_cast<T>(-k * k));
-  if (comm_->size() > 1)
-    op_.distribute(std::make_shared<Halo<C>>(comm_, layout_.neighbours, layout_.send, layout_.recv), comm_);
-  solution_ = View1<C>("polymech::helmholtz::solution", static_cast<Index>(layout_.global_of_local.size()));
 }
 
 // Solving and the results: solve.hpp.
@@ -267,6 +177,8 @@ namespace polymech::helmholtz {
 
 // Compiled once, in models/helmholtz/helmholtz.cpp (library polymech_helmholtz): the kernels of four
 // orders in two precisions are instantiated there and not in every file that uses the model.
+extern template struct Discretization<double>;
+extern template struct Discretization<float>;
 extern template class Helmholtz<double>;
 extern template class Helmholtz<float>;
 

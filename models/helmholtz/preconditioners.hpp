@@ -17,14 +17,17 @@
 #include <vector>
 
 #include "fem/transfer.hpp"
+#include "helmholtz/analytic.hpp"
 #include "helmholtz/config.hpp"
+#include "helmholtz/discretization.hpp"
 #include "helmholtz/dofs.hpp"
 #include "helmholtz/operator.hpp"
 #include "solvers/chebyshev.hpp"
 
 namespace polymech::helmholtz {
 
-// One order of the hierarchy: S on that order's DoFs and its Jacobi inverse.
+// One order of the hierarchy: S on that order's DoFs (from that order's discretization of the same Config)
+// and its Jacobi inverse.
 template <class T>
 struct ShiftedLevel {
   using C = Kokkos::complex<T>;
@@ -35,12 +38,12 @@ struct ShiftedLevel {
 };
 
 template <class T>
-ShiftedLevel<T> shifted_level(const Helmholtz<T>& m, double shift, int lanczos_steps) {
+ShiftedLevel<T> shifted_level(const HelmholtzOperator<T>& op, const Config& c, double shift, int lanczos_steps) {
   using C = Kokkos::complex<T>;
   ShiftedLevel<T> l;
-  const double k = m.config().wavenumber();
-  l.order = m.config().order;
-  l.S = m.op().shifted(static_cast<T>(shift * k * k));
+  const double k = c.wavenumber();
+  l.order = c.order;
+  l.S = op.shifted(static_cast<T>(shift * k * k));
   const Index n = l.S.local_size();
   View1<C> d("polymech::helmholtz::shifted_diagonal", n);
   l.S.diagonal(d);
@@ -97,8 +100,10 @@ template <class T>
 class ChebyshevPreconditioner {
  public:
   using C = Kokkos::complex<T>;
-  ChebyshevPreconditioner(const Helmholtz<T>& m, const ShiftedOptions& o)
-      : level_(std::make_unique<ShiftedLevel<T>>(shifted_level(m, o.shift, o.lanczos_steps))) {
+  // d: the discretization of Config c (at c.order); the options are c.shifted.
+  ChebyshevPreconditioner(const Discretization<T>& d, const Config& c)
+      : level_(std::make_unique<ShiftedLevel<T>>(shifted_level(d.op, c, c.shifted.shift, c.shifted.lanczos_steps))) {
+    const ShiftedOptions& o = c.shifted;
     const double lo = level_->spectrum.lo, hi = 1.1 * level_->spectrum.hi;
     const int degree = o.polynomial_degree > 0 ? o.polynomial_degree : solvers::chebyshev_degree(lo, hi, 0.1, 400);
     cheb_ = solvers::Chebyshev<HelmholtzOperator<T>, C>(&level_->S, level_->inv_diag, lo, hi, degree);
@@ -115,27 +120,30 @@ class ChebyshevPreconditioner {
   solvers::Chebyshev<HelmholtzOperator<T>, C> cheb_;
 };
 
-// The p-multigrid V-cycle on S (orders p, p / 2, ..., 1).
+// The p-multigrid V-cycle on S (orders p, p / 2, ..., 1): each coarser order is the discretization of the
+// same Config at that order (discretization.hpp); no model is built for it.
 template <class T>
 class PMultigrid {
  public:
   using C = Kokkos::complex<T>;
   using Smoother = solvers::Chebyshev<HelmholtzOperator<T>, C>;
 
-  PMultigrid(const Helmholtz<T>& fine, const ShiftedOptions& o) {
-    const Helmholtz<T>* finer = &fine;
-    for (int q = fine.config().order;;) {
-      auto l = std::make_unique<ShiftedLevel<T>>(shifted_level(*finer, o.shift, q == 1 ? o.lanczos_steps : 20));
+  // fine: the discretization of Config c (at c.order); the options are c.shifted.
+  PMultigrid(const Discretization<T>& fine, const Config& c) {
+    const ShiftedOptions& o = c.shifted;
+    const Discretization<T>* finer = &fine;
+    Config level = c;
+    for (int q = c.order;;) {
+      level.order = q;
+      auto l = std::make_unique<ShiftedLevel<T>>(shifted_level(finer->op, level, o.shift, q == 1 ? o.lanczos_steps : 20));
       levels_.push_back(std::move(l));
       if (q == 1) break;
       const int next = q / 2;
-      Config c = fine.config();
-      c.order = next;
-      c.solver.max_iterations = 0;
-      auto coarse = std::make_unique<Helmholtz<T>>(c);
+      level.order = next;
+      auto coarse = std::make_unique<Discretization<T>>(level, AnalyticField::from(level));
       const auto fine_mask = finer->constrained_mask(), coarse_mask = coarse->constrained_mask();
-      prolong_.push_back(prolongation<T>(finer->dofs(), fine_mask, coarse->dofs(), coarse_mask, false));
-      restrict_.push_back(prolongation<T>(finer->dofs(), fine_mask, coarse->dofs(), coarse_mask, true));
+      prolong_.push_back(prolongation<T>(finer->dofs, fine_mask, coarse->dofs, coarse_mask, false));
+      restrict_.push_back(prolongation<T>(finer->dofs, fine_mask, coarse->dofs, coarse_mask, true));
       owned_.push_back(std::move(coarse));
       finer = owned_.back().get();
       q = next;
@@ -183,7 +191,7 @@ class PMultigrid {
   }
 
   std::vector<std::unique_ptr<ShiftedLevel<T>>> levels_;
-  std::vector<std::unique_ptr<Helmholtz<T>>> owned_;
+  std::vector<std::unique_ptr<Discretization<T>>> owned_;  // the coarser orders
   std::vector<fem::Transfer<T>> prolong_, restrict_;
   std::vector<Smoother> smoothers_;
   std::vector<View1<C>> r_, z_, t_;
