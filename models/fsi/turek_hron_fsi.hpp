@@ -57,6 +57,9 @@ struct TurekHronFsiCase {
   double mean_velocity = 0.2;             // Ubar (FSI1)
   double rho_f = 1000.0, nu_f = 1e-3;     // fluid
   double rho_s = 1000.0, nu_s = 0.4, mu_s = 0.5e6;  // solid (SVK; rho_s enters only unsteady runs)
+  // gravity on the flag, m/s^2 along -y (CSM3's g = 2): the dead body force rho_s g per reference volume; the
+  // fluid gets none (no buoyancy). 0 (FSI1/2/3): no body force, the runs as before bitwise.
+  double gravity = 0.0;
   bool arc_root = true;                   // clamp the flag on the cylinder's arc (false: straight root at x_r)
   double ramp_time = 0.0;                 // the inflow's (1 - cos) ramp (unsteady runs: 2 s; 0: full from t = 0)
   bool fluid_chord = false;               // the fluid's time steps keep their first factorisation (FlowConfig::chord)
@@ -108,6 +111,11 @@ class TurekHronFsi {
     }
     sc.order = 2;
     sc.dirichlet.push_back({"xmin", 3u, {}});
+    if (!std::isfinite(c.gravity)) throw std::invalid_argument("turek-hron fsi: gravity must be finite");
+    if (c.gravity != 0.0) {
+      const double w = c.rho_s * c.gravity;
+      sc.body_forces.push_back({[w](const double*, double* b) { b[0] = 0.0, b[1] = -w; }});
+    }
     if (!(c.mu_s > 0) || !(c.nu_s > 0 && c.nu_s < 0.5)) throw std::invalid_argument("turek-hron fsi: need mu_s > 0 and 0 < nu_s < 0.5");
     materials::StVenantKirchhoff<double> law;
     law.elastic.mu = c.mu_s;

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "common/host_copy.hpp"
+#include "solvers/host_sparse_lu.hpp"
 #include "flow/analysis.hpp"
 #include "flow/time_state_archive.hpp"
 #include "fsi/turek_hron_fsi.hpp"
@@ -105,6 +106,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
     u_n_ = solid_->displacement_host();
     v_n_.assign(ns, 0.0);
     a_n_.assign(ns, 0.0);  // at rest, unloaded (the inflow starts at zero)
+    if (c.gravity != 0.0) a_n_ = vacuum_start_acceleration();
     d_n_.assign(X_.size(), 0.0);
     d_m_ = d_n_;
     x_n_.assign(2 * solid_wet_.size(), 0.0);
@@ -153,6 +155,32 @@ class TurekHronFsiTransient : public TurekHronFsi {
     // the solid's displacement (its Newton start) is u_n: written through the View handle (Kokkos::deep_copy
     // into a View held by const reference writes its data)
     Kokkos::deep_copy(solid_->displacement(), models::to_device<double>("polymech::fsi::restart_displacement", u_n_));
+  }
+
+  // The same Newmark step of the solid with no fluid (the flag in vacuo, under its own dead loads: gravity): the
+  // reference of the weakly coupled check (tests/flow/test_fsi2.cpp, bench/sweep_flap.cpp): same solid mesh,
+  // integrator, start and dt as step(). The fluid and its mesh are not touched; t counts these steps.
+  TurekHronFsiStep step_in_vacuo() {
+    const double dt = dt_, c0 = 1.0 / (beta_ * dt * dt);
+    const std::size_t ns = u_n_.size();
+    std::vector<double> u_pred(ns);
+    for (std::size_t i = 0; i < ns; ++i) u_pred[i] = u_n_[i] + dt * v_n_[i] + dt * dt * (0.5 - beta_) * a_n_[i];
+    solid_->set_inertia(c0, case_.rho_s, models::to_device<double>("polymech::fsi::newmark_predictor", u_pred));
+    solid_displacement(std::vector<double>(ns, 0.0));
+    const std::vector<double> u = solid_->displacement_host();
+    for (std::size_t i = 0; i < ns; ++i) {
+      const double a = c0 * (u[i] - u_pred[i]);
+      v_n_[i] += dt * ((1.0 - gamma_) * a_n_[i] + gamma_ * a);
+      a_n_[i] = a;
+    }
+    u_n_ = u;
+    ++vacuo_steps_;
+    TurekHronFsiStep out;
+    out.t = static_cast<double>(vacuo_steps_) * dt;
+    out.ux = u[static_cast<std::size_t>(2 * point_a_)];
+    out.uy = u[static_cast<std::size_t>(2 * point_a_ + 1)];
+    out.evaluations = 1;
+    return out;
   }
 
   // One coupled step; throws std::runtime_error when the coupling or a sub-solver fails.
@@ -241,6 +269,26 @@ class TurekHronFsiTransient : public TurekHronFsi {
   }
 
  private:
+  // Released from rest under dead loads (gravity): a_0 = (rho_s M)^-1 f_ext on the free DoFs (f_int(0) = 0), the
+  // flag's acceleration in vacuo (models/solid/finite_strain_dynamics.hpp's start()); in a fluid the true one is
+  // smaller by the added mass (unknown before the first step): the first step's error is O(dt) in the velocity.
+  std::vector<double> vacuum_start_acceleration() const {
+    solid::Triplets m = solid::assemble_mass(solid_->assembly_input(), case_.rho_s);
+    const auto& mask = solid_->constrained_mask();
+    for (std::size_t i = 0; i < mask.size(); ++i)
+      if (mask[i]) {
+        m.rows.push_back(static_cast<std::int64_t>(i));
+        m.cols.push_back(static_cast<std::int64_t>(i));
+        m.values.push_back(1.0);
+      }
+    solvers::HostSparseLU lu;
+    lu.factor(m.n, m.rows, m.cols, m.values);
+    std::vector<double> a = models::to_host(solid_->external_force());
+    for (std::size_t i = 0; i < mask.size(); ++i)
+      if (mask[i]) a[i] = 0.0;
+    lu.solve(a.data());
+    return a;
+  }
 
   double dt_, beta_, gamma_;
   bool incremental_;
@@ -249,6 +297,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
   std::vector<double> u_n_, v_n_, a_n_;  // the solid's Newmark state at t_n
   std::vector<double> d_n_, d_m_;        // the mesh displacement at t_n and t_n-1
   std::vector<double> x_n_;              // the wet nodes' displacement of the mesh at t_n
+  long vacuo_steps_ = 0;                 // steps of step_in_vacuo()
 };
 
 // The benchmark's statistics of a run (Turek & Hron 2006, section 3.3): mean = (max + min) / 2 and amplitude =
@@ -297,6 +346,74 @@ inline std::vector<TurekHronFsiStep> run_turek_hron_fsi(const TurekHronFsiRunCon
     }
   }
   if (timings) *timings = model.timings();
+  return rows;
+}
+
+}  // namespace polymech::fsi
+
+namespace polymech::fsi {
+
+// The weakly coupled check (issue 36): CSM3's flag (Turek & Hron 2006, section 3.2: SVK, rho_s 1000, mu_s 0.5e6,
+// nu_s 0.4, gravity g = 2 along -y) on the cylinder of the channel, released from rest undeformed in a fluid at
+// rest (no inflow) of density rho_f. The fluid adds the mass it must move (m_a ~ rho_f times a plate's potential-
+// flow added mass, more when confined): the flag's period must be close to its in-vacuo one for rho_f << rho_s
+// and grow with rho_f. The fluid has no gravity (no buoyancy): the mean deflection is the flag's own.
+inline TurekHronFsiCase flap_case(int level, double rho_f, double nu_f = 1e-3) {
+  TurekHronFsiCase c;
+  c.level = level;
+  c.mean_velocity = 0.0;
+  c.rho_f = rho_f, c.nu_f = nu_f;
+  c.rho_s = 1000.0, c.mu_s = 0.5e6, c.nu_s = 0.4;
+  c.gravity = 2.0;
+  c.solid_tolerance = 1e-8;  // as FSI2/FSI3 (turek_hron_fsi_case): the inertia's round-off
+  c.fluid_chord = true;
+  c.coupling = TurekHronFsiRunConfig{}.coupling;
+  return c;
+}
+
+// Turning points of uy(A) of a flag released from rest at t = 0 (t = 0 is its first maximum): the interior
+// extrema of the sampled history, each refined by the parabola through it and its neighbours. period = 2 (t_k -
+// t_0) / k over the last turning point k (the mean half period, so one and a half periods give a period);
+// first_min: uy at the first minimum (the first swing's depth; in vacuo and undamped the amplitude is half of
+// it). False when there is no minimum.
+struct FlapSwing {
+  double period = 0.0, first_min = 0.0, first_max = 0.0;  // first_max: the maximum after it (0 if none)
+  int turning_points = 0;                                 // interior extrema found
+};
+inline bool flap_swing(const std::vector<TurekHronFsiStep>& rows, FlapSwing& s) {
+  s = FlapSwing{};
+  double t_last = 0.0;
+  for (std::size_t k = 1; k + 1 < rows.size(); ++k) {
+    const double a = rows[k - 1].uy, b = rows[k].uy, c = rows[k + 1].uy;
+    const bool mx = b > a && b >= c, mn = b < a && b <= c;
+    if (!mx && !mn) continue;
+    const double den = a - 2 * b + c, h = rows[k + 1].t - rows[k].t, off = den != 0.0 ? 0.5 * (a - c) / den : 0.0;
+    const double value = b - 0.25 * (a - c) * off;  // the parabola's extreme value
+    ++s.turning_points;
+    t_last = rows[k].t + off * h;
+    if (s.turning_points == 1) s.first_min = value;
+    if (s.turning_points == 2) s.first_max = value;
+  }
+  if (s.turning_points < 1 || !(s.first_min < 0.0)) return false;
+  s.period = 2.0 * t_last / s.turning_points;
+  return true;
+}
+
+// A run of the flap: steps to end_time (in vacuo: step_in_vacuo(), the same solid without the fluid); CPU seconds
+// (std::clock) and the coupling's evaluations per step into the optional outputs.
+inline std::vector<TurekHronFsiStep> run_flap(const TurekHronFsiCase& c, double dt, double end_time, bool in_vacuo,
+                                              double* cpu_seconds = nullptr, double* evaluations_per_step = nullptr) {
+  const std::clock_t c0 = std::clock();
+  TurekHronFsiTransient model(c, dt);
+  std::vector<TurekHronFsiStep> rows;
+  const long steps = std::lround(end_time / dt);
+  long evaluations = 0;
+  for (long n = 0; n < steps; ++n) {
+    rows.push_back(in_vacuo ? model.step_in_vacuo() : model.step());
+    evaluations += rows.back().evaluations;
+  }
+  if (cpu_seconds) *cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  if (evaluations_per_step) *evaluations_per_step = steps > 0 ? static_cast<double>(evaluations) / static_cast<double>(steps) : 0.0;
   return rows;
 }
 
