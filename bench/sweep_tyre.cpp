@@ -3,7 +3,9 @@
 // damping), the inflated shape and the rim's reaction against the membrane closed form; then a rigid plate
 // raised against the tyre at a constant speed (the rim held): load against deflection and the contact patch.
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_tyre [n_theta n_section n_wall order damping_inflate damping_plate
-//                                               plate_speed max_deflection out.csv]
+//                                               plate_speed max_deflection out.csv wall]
+// wall: smeared (default, the one law) or layered (TyreSpec::layered: rubber / cord layer / rubber through the
+// wall, n_wall odd >= 3).
 // Prints the set-up (DoFs, the critical step, the law), the inflation history and the plate's load-deflection
 // rows; writes them as CSV (phase,t,deflection,plate_force,rim_force_z,patch_length,patch_width,nodes_in_contact,
 // outer_radius,width,bead_axial).
@@ -70,10 +72,16 @@ int main(int argc, char** argv) {
   const double plate_speed = argc > 7 ? std::atof(argv[7]) : 0.5;
   const double max_deflection = argc > 8 ? std::atof(argv[8]) : 0.04;
   const std::string path = argc > 9 ? argv[9] : "sweep_tyre.csv";
+  const std::string wall = argc > 10 ? argv[10] : "smeared";
+  if (wall != "smeared" && wall != "layered") {
+    std::fprintf(stderr, "sweep_tyre: argument 10 (wall) is '%s'; allowed: smeared, layered\n", wall.c_str());
+    return 2;
+  }
   const double p = 0.35e6, t_inflate = 0.010, t_hold = 0.010;
   polymech::kx::initialize();
   {
-    const so::TyreSpec spec{};
+    so::TyreSpec spec{};
+    spec.layered = wall == "layered";
     const so::TyreSection sec = so::tyre_section(spec);
     const so::TyreLaw law = so::tyre_equivalent_law(spec);
     std::printf("section: inner crown r %.4f, arcs R = %.4f %.4f %.4f m, angles %.3f %.3f %.3f rad, half contour %.4f m, "
@@ -97,6 +105,13 @@ int main(int argc, char** argv) {
     eo.density = law.density;
     eo.damping = alpha_inflate;
     eo.load_factor = [t_inflate](double t) { return std::fmin(t / t_inflate, 1.0); };
+    if (spec.layered) {
+      const so::TyreLayers lay = so::tyre_layers(spec, n_theta, n_section, n_wall);
+      eo.cell_scale = lay.cell_scale;
+      std::printf("layered wall: rubber E %.4g Pa (scale %.4g), cord layer E %.4g..%.4g Pa (scale up to %.4g) in the middle of %d "
+                  "cells through the wall\n",
+                  lay.E_rubber, lay.scale_min, lay.E_cord_min, lay.E_cord_max, lay.scale_max, n_wall);
+    }
     double t0 = cpu_seconds();
     so::HyperelasticExplicit<double, 3> m(c, so::HyperelasticLaw(law.law), eo, {{"zmin", p}}, {beads[0], beads[1]});
     const double setup = cpu_seconds() - t0;

@@ -95,6 +95,12 @@ struct FiniteStrainElementData {
   View1<double> energy;                                           // [elements]
   View1<int> status;                                              // [elements]
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> matrices;  // [elements][(D N^D)^2] when tangent
+  // Per-element stiffness scale s_e (storage order; empty: one law, s_e = 1): element e's law is the given one
+  // times s_e. For a law whose W is linear in its moduli at fixed F (Mooney-Rivlin in C10, C01, kappa; neo-Hookean
+  // and St. Venant-Kirchhoff in lambda, mu), s_e W, s_e P and s_e A are the same law with its moduli times s_e:
+  // a layered body (the tyre's cord layer, issue 37) with one law evaluation per point. Applied to the
+  // quadrature weight (w_q det J -> s_e w_q det J), so s_e = 1 gives the one-law result bitwise.
+  View1<T> scale;
 };
 
 struct FiniteStrainEvaluation {
@@ -114,11 +120,14 @@ void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const
   const auto energy = out.energy;
   const auto status = out.status;
   const auto Km = out.matrices;
+  const auto scale = out.scale;
+  const bool scaled = scale.extent(0) > 0;
   fem::parallel_for_batches(
       "polymech::solid::finite_strain_elements", el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
         const Index row = geo.slot(e0);
         for (int l = 0; l < count; ++l) {
           const Index e = e0 + l;
+          const T se = scaled ? scale(e) : T(1);
           T ue[ND][D], fe[ND][D], G[ND][D];
           for (int a = 0; a < ND; ++a)
             for (int c = 0; c < D; ++c) {
@@ -131,7 +140,7 @@ void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const
           int bad = 0;
           for (int q = 0; q < QD && !bad; ++q) {
             T Ji[D][D];
-            const T wd = geo.template at<Q>(row, e0, l, q, b.w, Ji);
+            const T wd = se * geo.template at<Q>(row, e0, l, q, b.w, Ji);  // s_e w_q det J
             const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
             for (int a = 0; a < ND; ++a) {
               const int ai[3] = {a % N, (a / N) % N, a / (N * N)};

@@ -101,6 +101,36 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
     set_up_pressure(pressures);
   }
 
+  // Per-cell stiffness scales (issue 37: layered walls): cell c's law is the model's law with its moduli times
+  // s[c] (kernels/solid/finite_strain.hpp, FiniteStrainElementData::scale), c the mesh's cell id (lattice order
+  // i0 + c0 (i1 + c1 i2) on a lattice, the element on an unstructured mesh). Every s[c] must be finite and > 0.
+  // An empty vector returns to the one law (nothing stored, the kernel's one-law path).
+  void set_cell_scale(const std::vector<double>& s) {
+    if (s.empty()) {
+      elements_.scale = View1<T>();
+      scale_max_ = 1.0;
+      return;
+    }
+    const auto& cells = this->discretization().element_cells;
+    std::vector<T> per_element(cells.size());
+    scale_max_ = 0.0;
+    for (std::size_t e = 0; e < cells.size(); ++e) {
+      const std::int64_t c = cells[e];
+      if (c < 0 || static_cast<std::size_t>(c) >= s.size())
+        throw std::invalid_argument("solid::Hyperelastic::set_cell_scale: " + std::to_string(s.size()) + " scales for a mesh with cell " +
+                                    std::to_string(c));
+      const double v = s[static_cast<std::size_t>(c)];
+      if (!(v > 0.0) || !std::isfinite(v))
+        throw std::invalid_argument("solid::Hyperelastic::set_cell_scale: cell " + std::to_string(c) + " has scale " +
+                                    std::to_string(v) + " (must be finite and > 0)");
+      per_element[e] = static_cast<T>(v);
+      scale_max_ = std::fmax(scale_max_, v);
+    }
+    elements_.scale = models::to_device<T>("polymech::solid::fs_element_scale", per_element);
+  }
+  // The largest per-cell scale (1 with one law).
+  double cell_scale_max() const { return scale_max_; }
+
   const PressureFaces<D>& pressure_faces() const { return pressure_; }
   // Strain energy of the last evaluation.
   double strain_energy() const { return energy_; }
@@ -276,7 +306,7 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
   FiniteStrainElementData<T> elements_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> face_force_, face_stiffness_;
   View1<T> f_load_, nodal_load_;
-  double energy_ = 0.0;
+  double energy_ = 0.0, scale_max_ = 1.0;
   solvers::HostSparseLU lu_;
 };
 

@@ -40,6 +40,10 @@ struct ExplicitFiniteStrainOptions {
   int power_iterations = 300;
   double power_tolerance = 1e-4;
   std::function<double(double)> load_factor;  // s(t); empty: 1
+  // Per-cell stiffness scales (Hyperelastic::set_cell_scale; issue 37: the tyre's layered wall); empty: one law.
+  // The critical step's power iteration runs on the scaled residual, so a stiffer layer shortens dt_crit as
+  // 1/sqrt(s) where it sets the highest mode.
+  std::vector<double> cell_scale;
 };
 
 template <class T, int D>
@@ -56,6 +60,7 @@ class HyperelasticExplicit {
     if (o.damping_frame >= 0 && D != 3) throw std::invalid_argument("solid::HyperelasticExplicit: damping_frame is for 3D solids");
     if (!(o.safety > 0.0 && o.safety <= 1.0)) throw std::invalid_argument("solid::HyperelasticExplicit: safety must be in (0, 1]");
     if (o.dt < 0.0 || !std::isfinite(o.dt)) throw std::invalid_argument("solid::HyperelasticExplicit: dt must be >= 0 (0: automatic)");
+    if (!o.cell_scale.empty()) solid_.set_cell_scale(o.cell_scale);
     const Index n = solid_.dof_count();
     u_ = View1<T>("polymech::solid::fse_u", n);
     v_ = View1<T>("polymech::solid::fse_v", n);

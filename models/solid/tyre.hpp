@@ -18,7 +18,7 @@
 // 0.310 m (paper 2 §4); rim 16.5 in (radius 0.2096 m) and 8.25 in wide (the 16.5x8.25 rim of this size, so the
 // beads at y = +-0.105 m); wall gauges, crown and tread width assumed (TyreSpec comments; docs/VALIDATION.md).
 //
-// One law for every element (the Config has one): a Mooney-Rivlin solid whose initial shear modulus is the
+// By default one law for every element (the Config has one; TyreSpec::layered = false): a Mooney-Rivlin solid whose initial shear modulus is the
 // rubber's plus the reinforcement smeared over the sidewall gauge (tyre_equivalent_law): each carcass ply is
 // a unidirectional cord-rubber layer (rule of mixtures E_1 = V_f E_cord + (1 - V_f) E_rubber along the cords,
 // E_2 = E_rubber / (1 - V_f) across), the plies' in-plane stiffness replaced by the quasi-isotropic laminate's
@@ -28,6 +28,8 @@
 // composite is compressible; a larger ratio shortens the explicit step as 1/sqrt(kappa)). Smearing over the
 // gauge matches the membrane stiffness that carries the inflation; it overestimates the wall's bending
 // stiffness (the cords sit at mid-surface) and underestimates the steel belt's circumferential stiffness.
+// With TyreSpec::layered the wall is layered instead (tyre_layers: the same law scaled per cell, the plies in
+// the middle cell through the wall), which keeps the membrane stiffness and drops the plies' bending share.
 //
 // Plate (PlateContact): a rigid plane z = z_p(t) below the tyre, normal +z, frictionless; each outer-surface node
 // below it gets f_z = k_i g + c_i (v_p - v_z) >= 0 (g = z_p - z_i the penetration), k_i = beta m_i omega_max^2 (a
@@ -63,6 +65,9 @@ struct TyreSpec {
   int plies = 2;                        // radial carcass plies
   double kappa_ratio = 10.0;            // kappa / mu_eq (nu = 0.45)
   double mass = 37.6;                   // kg: the tyre's mass; the density follows from the volume
+  // The wall's law: false, the one smeared law (tyre_equivalent_law) in every element; true, layers through the
+  // wall (tyre_layers: rubber, the cord layer in the middle cell, rubber; needs an odd n_wall >= 3).
+  bool layered = false;
 };
 
 // The inner contour's half (the y > 0 side) from the centre line: three arcs (radius, turning angle).
@@ -193,6 +198,57 @@ inline TyreLaw tyre_equivalent_law(const TyreSpec& s) {
   o.law.kappa = s.kappa_ratio * o.mu;
   o.density = s.mass / tyre_volume(s);
   return o;
+}
+
+// The layered wall (issue 37: "reinforcement as orthotropic layers"): per cell of the make_tyre lattice a scale of
+// the smeared law (HyperelasticExplicit's cell_scale; the Mooney-Rivlin stress is linear in C10, C01 and kappa, so
+// s times the law is the same law with its moduli times s). With n_wall (odd, >= 3) cells through the wall, the
+// middle cell is the cord layer (the carcass plies at the wall's mid-surface) and the others rubber:
+//   rubber:      E = E_rubber = 6 (C10 + C01)                       (s = E_rubber / E_eq)
+//   cord layer:  E = E_rubber + E_qi t_plies / h_c,  h_c = h / n_wall (s = E / E_eq)
+// h the local gauge at the cell's centre along the contour (the tread's 20 mm, the sidewall's 12 mm, blended over
+// the shoulder), so the wall's membrane stiffness is E_rubber h + E_qi t_plies everywhere, that of the smeared law
+// on the sidewall, while the plies' share of the bending stiffness drops from E_qi t_plies h^2 / 12 (smeared
+// over h) to E_qi t_plies h^2 / (12 n_wall^2) (a layer h / n_wall thick at the mid-surface): the crown and the
+// walls bend as rubber with a stiff membrane, as a cord-rubber laminate does. The plies stay quasi-isotropic
+// in the plane (E_qi) and isotropic through it (the Mooney-Rivlin law), as in the smeared law.
+struct TyreLayers {
+  std::vector<double> cell_scale;     // [n_theta n_section n_wall], cell id i0 + n_theta (i1 + n_section i2)
+  double E_rubber = 0.0, E_cord_min = 0.0, E_cord_max = 0.0, scale_max = 0.0, scale_min = 0.0;
+};
+
+inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
+  if (n_wall < 3 || n_wall % 2 == 0)
+    throw std::invalid_argument("solid::tyre_layers: the layered wall needs an odd number of cells through the wall >= 3 (got " +
+                                std::to_string(n_wall) + ")");
+  const TyreLaw eq = tyre_equivalent_law(s);
+  const TyreSection c = tyre_section(s);
+  TyreLayers o;
+  o.E_rubber = 6.0 * (s.C10 + s.C01);
+  o.E_cord_min = 1e300;
+  o.cell_scale.assign(static_cast<std::size_t>(n_theta) * static_cast<std::size_t>(n_section) * static_cast<std::size_t>(n_wall), 0.0);
+  const double t_plies = s.plies * s.ply_thickness;
+  for (int j = 0; j < n_section; ++j) {
+    const double sigma = (2.0 * (j + 0.5) / n_section - 1.0) * c.half_length;  // the cell's centre along the contour
+    double p[2], n[2], h = 0.0;
+    c.at(std::fabs(sigma), p, n, h);
+    const double E_cord = o.E_rubber + eq.E_quasi_isotropic * t_plies / (h / n_wall);
+    o.E_cord_min = std::fmin(o.E_cord_min, E_cord);
+    o.E_cord_max = std::fmax(o.E_cord_max, E_cord);
+    for (int k = 0; k < n_wall; ++k) {
+      const double sc = (k == n_wall / 2 ? E_cord : o.E_rubber) / eq.E_equivalent;
+      for (int i = 0; i < n_theta; ++i)
+        o.cell_scale[static_cast<std::size_t>(i + n_theta * (j + n_section * k))] = sc;
+    }
+  }
+  o.scale_min = o.E_rubber / eq.E_equivalent;
+  o.scale_max = o.E_cord_max / eq.E_equivalent;
+  return o;
+}
+
+// The cell scales of the spec's wall: empty with the smeared law (the one-law path), tyre_layers' with layered.
+inline std::vector<double> tyre_cell_scale(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
+  return s.layered ? tyre_layers(s, n_theta, n_section, n_wall).cell_scale : std::vector<double>{};
 }
 
 // The widest point of the (deformed) inner surface on the y > 0 side, on the meridian theta = 0: (y, r) at the

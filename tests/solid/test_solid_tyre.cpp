@@ -132,3 +132,82 @@ TEST(Tyre, AStepAboveTheCriticalOneIsRefused) {
   EXPECT_THROW((so::HyperelasticExplicit<double, 3>(tyre_config(spec), so::HyperelasticLaw(law.law), eo, {{"zmin", kP}}, rim())),
                std::invalid_argument);
 }
+
+// --- per-cell stiffness scales (the layered wall, issue 37) ---------------------------------------------------
+
+namespace {
+
+// Block [0, 2] x [0, 1] x [0, 1], `cells` cells, rollers on the min sides, u_x = 2 (stretch - 1) on xmax.
+so::Config<3> scaled_block(std::array<int, 3> cells, double stretch) {
+  so::BoxSpec b;
+  b.lengths = {2.0, 1.0, 1.0};
+  b.cells = cells;
+  so::Config<3> c;
+  c.mesh = so::make_box<3>(b);
+  c.order = 2;
+  c.dirichlet.push_back({"xmin", 1u, {}});
+  c.dirichlet.push_back({"ymin", 2u, {}});
+  c.dirichlet.push_back({"zmin", 4u, {}});
+  c.dirichlet.push_back({"xmax", 1u, [stretch](const double*, double* u) { u[0] = 2.0 * (stretch - 1.0); }});
+  return c;
+}
+
+pm::materials::MooneyRivlin<double> block_law() {
+  pm::materials::MooneyRivlin<double> l;
+  l.C10 = 0.8e6;
+  l.C01 = 0.2e6;
+  l.kappa = 4.0e6 / 3.0;  // = 2/3 mu (mu = 2 (C10 + C01)): Poisson's ratio 0, so the two regions in series
+                          // stretch without lateral strain and the series rule is exact to the finite strain
+  return l;
+}
+
+// The xmax reaction of the block stretched by 0.1 % (quasi-static Newton), the cells scaled by `scale`.
+double block_reaction(std::array<int, 3> cells, const std::vector<double>& scale) {
+  so::Hyperelastic<double, 3> m(scaled_block(cells, 1.001), so::HyperelasticLaw(block_law()));
+  m.set_cell_scale(scale);
+  so::Monitor mon;
+  mon.reaction_boundary = "xmax";
+  so::LoadPath path;
+  path.increments = {1};
+  return m.run(path, mon).back().reaction[0];
+}
+
+}  // namespace
+
+TEST(TyreLayers, UnitScalesAreTheOneLaw) {
+  // the residual at a displacement field of 1e-3 shears and stretches, with and without scales of 1
+  so::Hyperelastic<double, 3> a(scaled_block({2, 2, 3}, 1.0), so::HyperelasticLaw(block_law()));
+  so::Hyperelastic<double, 3> b(scaled_block({2, 2, 3}, 1.0), so::HyperelasticLaw(block_law()));
+  b.set_cell_scale(std::vector<double>(12, 1.0));
+  const auto& X = a.discretization().coordinates;
+  std::vector<double> u(X.size());
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = 1e-3 * (X[(i + 1) % X.size()] + 0.5 * X[i] * X[i]);
+  pm::View1<double> uv = pm::models::to_device<double>("test::u", u), ra("test::ra", u.size()), rb("test::rb", u.size());
+  const double na = a.residual(uv, 1.0, ra), nb = b.residual(uv, 1.0, rb);
+  const std::vector<double> ha = pm::models::to_host(ra), hb = pm::models::to_host(rb);
+  double diff = 0.0;
+  for (std::size_t i = 0; i < ha.size(); ++i) diff = std::fmax(diff, std::fabs(ha[i] - hb[i]));
+  std::printf("unit cell scales: |r| %.10g vs %.10g, max difference %.3g; energy %.10g vs %.10g\n", na, nb, diff, a.strain_energy(),
+              b.strain_energy());
+  EXPECT_GT(na, 0.0);
+  EXPECT_LE(diff, 1e-14 * na);
+  EXPECT_NEAR(a.strain_energy(), b.strain_energy(), 1e-14 * a.strain_energy());
+  EXPECT_DOUBLE_EQ(b.cell_scale_max(), 1.0);
+  EXPECT_THROW(b.set_cell_scale(std::vector<double>(11, 1.0)), std::invalid_argument);  // too few
+  EXPECT_THROW(b.set_cell_scale(std::vector<double>(12, 0.0)), std::invalid_argument);   // not > 0
+}
+
+TEST(TyreLayers, TwoRegionBlockInSeriesAndInParallel) {
+  const double s = 8.0;
+  const double one = block_reaction({2, 2, 1}, {});
+  // in series: the stiff half along the stretch (cells i0 = 1): compliance L/2 / E + L/2 / (s E)
+  const double series = block_reaction({2, 2, 1}, {1.0, s, 1.0, s});
+  // in parallel: the stiff half across (cells i1 = 1): stiffness (E + s E) / 2
+  const double parallel = block_reaction({2, 2, 1}, {1.0, 1.0, s, s});
+  const double series_hand = 2.0 / (1.0 + 1.0 / s), parallel_hand = 0.5 * (1.0 + s);
+  std::printf("two-region block (s = %g): series %.6f (by hand %.6f), parallel %.6f (by hand %.6f) x the one law\n", s,
+              series / one, series_hand, parallel / one, parallel_hand);
+  // Poisson's ratio 0: no lateral strain, both rules exact but for the 0.1 % finite strain
+  EXPECT_NEAR(parallel / one, parallel_hand, 2e-3 * parallel_hand);
+  EXPECT_NEAR(series / one, series_hand, 2e-3 * series_hand);
+}
