@@ -68,7 +68,8 @@ CostEstimate flow_cost(const FlowSetup& s, double unknowns) {
     // steps, 170 s), 0.059 s per FSI3 step (5000, 297 s); this gives 0.057 s at level 0 and 0.53 s at level 1
     // (apps/turek_hron, notes h-fsi23: 0.060 s per step for FSI2 at level 0, dt 0.008; 0.48-0.52 s for FSI3 at level 1).
     const double per_step = 3.0 * iteration + 0.08 * std::pow(unknowns / 9106.0, 1.4);
-    c.method = "Taylor-Hood Q2/Q1 ALE Navier-Stokes (BDF2) + SVK flag (Newmark), Turek-Hron FSI" + std::to_string(s.test) +
+    c.method = "Taylor-Hood Q2/Q1 ALE Navier-Stokes (BDF2) + SVK flag (Newmark), " +
+               (s.flap ? std::string("the weakly coupled flap (CSM3's flag in the fluid at rest)") : "Turek-Hron FSI" + std::to_string(s.test)) +
                ", level " + std::to_string(s.level) + ", dt " + format_number(s.dt) + ", " + s.coupling_method + " coupling per step";
     c.steps = static_cast<double>(s.steps());
     c.step_name = "time steps (~3 coupling evaluations each)";
@@ -111,16 +112,17 @@ FlowScene load_flow_scene(const std::filesystem::path& file, const SceneOptions&
   {
     const SceneTable t = root.table("case");
     c.benchmark = t.choice("benchmark", {"turek_hron"});
-    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3", "fsi1", "fsi2", "fsi3"});
-    c.fsi = test.compare(0, 3, "fsi") == 0;
-    c.test = test[3] - '0';  // fsi1, fsi2, fsi3: the inflow of CFD1, CFD2, CFD3
+    const std::string test = t.choice("test", {"cfd1", "cfd2", "cfd3", "fsi1", "fsi2", "fsi3", "flap"});
+    c.flap = test == "flap";
+    c.fsi = c.flap || test.compare(0, 3, "fsi") == 0;
+    c.test = c.flap ? 2 : test[3] - '0';  // fsi1, fsi2, fsi3: the inflow of CFD1, CFD2, CFD3; flap: in time as fsi2
     const double ubar[4] = {0.0, 0.2, 1.0, 2.0};
-    c.mean_velocity = t.real("mean_velocity", ubar[c.test], Range{0.0, 100.0, true, false, "m/s (the inflow's mean velocity)"});
-    c.density = t.real("density", 1000.0, Range{1e-3, 1e5, false, false, "kg/m^3"});
+    c.mean_velocity = t.real("mean_velocity", c.flap ? 0.0 : ubar[c.test], Range{0.0, 100.0, true, false, "m/s (the inflow's mean velocity)"});
+    c.density = t.real("density", c.flap ? 1.0 : 1000.0, Range{1e-3, 1e5, false, false, "kg/m^3"});
     c.viscosity = t.real("viscosity", 1e-3, Range{1e-8, 1e3, false, false, "m^2/s (kinematic)"});
     t.finish();
   }
-  c.transient = c.test == 3 || (c.fsi && c.test == 2);  // cfd3, fsi2, fsi3
+  c.transient = c.test == 3 || (c.fsi && c.test == 2);  // cfd3, fsi2, fsi3, flap
   {
     const SceneTable t = root.table("mesh");
     c.scene_level = static_cast<int>(t.integer("level", 0, 6));

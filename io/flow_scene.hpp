@@ -8,7 +8,11 @@
 //               0.2, 1, 2 m/s; cfd1, cfd2 and fsi1 are solved steady, cfd3, fsi2 and fsi3 in time; the fsi tests
 //               with the elastic SVK flag of models/fsi/turek_hron_fsi.hpp, its solid parameters the benchmark's:
 //               models/fsi/turek_hron_fsi_transient.hpp for fsi2 and fsi3), density (default 1000 kg/m^3),
-//               viscosity (kinematic, default 1e-3 m^2/s): the benchmark's values unless changed
+//               viscosity (kinematic, default 1e-3 m^2/s): the benchmark's values unless changed;
+//               test = "flap": the weakly coupled check (issue 36; fsi::flap_case): CSM3's flag (rho_s 1000,
+//               mu_s 0.5e6, g = 2) released from rest into the fluid at rest (mean_velocity default 0), density
+//               default 1 kg/m^3; run in time like fsi2 ([time], [coupling] as theirs), its period against the
+//               same flag's in vacuo
 //   [mesh]      level 0..6 at accuracy "paper" (260 x 4^level Q2/Q1 cells); the presets "standard" and "draft"
 //               take log2 of their factor (1 and 2 by default) levels off, down to level 0
 //   [coupling]  fsi tests only, optional: method = "iqn-ils" (default) | "aitken" | "relaxation", tolerance
@@ -56,12 +60,13 @@ struct FlowSetup {
   double dt = 0.0, end_time = 0.0, ramp_time = 0.0;
   int sample_every = 1;
   double kick_omega = 0.0, kick_start = 2.0, kick_duration = 0.25;
-  bool fsi = false;                   // fsi1, fsi2, fsi3 (test 1, 2, 3: the inflow of CFD1, CFD2, CFD3)
+  bool fsi = false;                   // fsi1, fsi2, fsi3 (test 1, 2, 3: the inflow of CFD1, CFD2, CFD3), flap
+  bool flap = false;                  // the weakly coupled flap (fsi, test 2: in time; no inflow by default)
   double scene_dt = 0.0;              // [time] dt as written (fsi2, fsi3: at accuracy "paper"; dt after the preset)
   std::string coupling_method = "iqn-ils";
   double coupling_tolerance = 1e-8, coupling_omega = 0.5;
   int coupling_max_iterations = 50, coupling_reuse = 8;
-  std::string name() const { return (fsi ? "fsi" : "cfd") + std::to_string(test); }
+  std::string name() const { return flap ? std::string("flap") : (fsi ? "fsi" : "cfd") + std::to_string(test); }
   std::int64_t steps() const { return transient ? static_cast<std::int64_t>(end_time / dt + 0.5) : 0; }
 };
 

@@ -8,6 +8,9 @@
 // (fsi::turek_hron_fsi_period), against Table 13. Checkpoints and --restart (apps/turek_hron/loop_checkpoints.hpp):
 // the coupled model's state (TurekHronFsiTransient::save: fluid, mesh, solid, the coupling's IQN-ILS columns) and
 // the rows so far; a resumed run writes series.csv and summary.json as one never interrupted.
+// The flap (test = "flap", issue 36's weakly coupled check): CSM3's flag under gravity in the fluid at rest
+// (fsi::flap_case), the same loop; summary.json's "flap" keys: the period of uy(A) against the same flag's in vacuo
+// (fsi::run_flap without the fluid, run after the loop: cheap) and CSM3's reference (Table 6).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -68,7 +71,8 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   cs.records.keep("turek_hron/max_div", max_div);
   cs.records.keep("turek_hron/next_report", next_report);
   LoopCheckpoints ck(cs);  // with --restart: the records above are the checkpoint's
-  fsi::TurekHronFsiCase c = fsi::turek_hron_fsi_case(test, s.level);
+  // flap: CSM3's flag under gravity in the fluid at rest (fsi::flap_case; the scene's inflow, density, viscosity below)
+  fsi::TurekHronFsiCase c = s.flap ? fsi::flap_case(s.level, s.density, s.viscosity) : fsi::turek_hron_fsi_case(test, s.level);
   c.mean_velocity = s.mean_velocity;
   c.rho_f = s.density;
   c.nu_f = s.viscosity;
@@ -82,11 +86,12 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   c.coupling.max_iterations = s.coupling_max_iterations;
   c.coupling.reuse = s.coupling_reuse;
   fsi::TurekHronFsiTransient model(c, s.dt);
-  const auto ref = fsi::turek_hron_fsi_periodic_reference(test);
+  const auto ref = s.flap ? fsi::TurekHronFsiPeriodicReference{} : fsi::turek_hron_fsi_periodic_reference(test);
+  const char* name = test == "fsi2" ? "FSI2" : test == "fsi3" ? "FSI3" : "flap";
   if (!opt.quiet)
     std::fprintf(stderr, "[turek_hron] %s\n  %s, level %d: %lld fluid unknowns, %lld mesh-motion unknowns, %lld solid DoFs, %zu wet nodes; "
                  "dt %g s (%g at accuracy paper), %lld steps to t = %g s; %s coupling to %g per step; %s\n", scene.header.title.c_str(),
-                 test == "fsi2" ? "FSI2" : "FSI3", s.level, static_cast<long long>(model.fluid_unknowns()),
+                 name, s.level, static_cast<long long>(model.fluid_unknowns()),
                  static_cast<long long>(model.mesh_unknowns()), static_cast<long long>(model.solid_unknowns()), model.interface_nodes(), s.dt,
                  s.scene_dt, static_cast<long long>(steps), static_cast<double>(steps) * s.dt, s.coupling_method.c_str(), s.coupling_tolerance,
                  thread_count().c_str());
@@ -166,13 +171,32 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   j["cpu_split"] = {{"setup", t.setup}, {"mesh_motion", t.mesh}, {"fluid", t.fluid}, {"solid", t.solid}};
   j["fluid_split"] = flow_cpu_split(model.fluid().timings());  // this process's (a restarted run: since the restart)
   j["restarts"] = ck.restarts();
-  j["reference"] = {{"source", "Turek & Hron 2006, Table 13"},
-                    {"ux_mean", ref.ux_mean}, {"ux_amplitude", ref.ux_amplitude}, {"uy_mean", ref.uy_mean},
-                    {"uy_amplitude", ref.uy_amplitude}, {"drag_mean", ref.drag_mean}, {"drag_amplitude", ref.drag_amplitude},
-                    {"lift_mean", ref.lift_mean}, {"lift_amplitude", ref.lift_amplitude}, {"frequency", ref.frequency}};
-  const double ubar = test == "fsi2" ? 1.0 : 2.0;
-  if (!(s.mean_velocity == ubar && s.density == 1000.0 && s.viscosity == 1e-3 && s.ramp_time == 2.0))
-    j["reference"]["note"] = "the scene changes the benchmark's inflow, ramp, density or viscosity";
+  if (s.flap) {
+    // the weakly coupled check: the period of uy(A) against the same flag's in vacuo (same mesh, Newmark, dt;
+    // fsi::run_flap, the fluid left out), and CSM3's (Turek & Hron 2006, Table 6: 1.0995 Hz, uy(A) down to
+    // -63.607e-3 - 65.160e-3 m)
+    const double end = rows.empty() ? s.dt : rows.back().t;
+    fsi::FlapSwing w, v;
+    const bool ok = fsi::flap_swing(rows, w);
+    const bool ok_vacuo = fsi::flap_swing(fsi::run_flap(c, s.dt, std::max(end, s.dt), true), v);
+    j["flap"] = {{"turning_points", w.turning_points}, {"period", ok ? w.period : 0.0}, {"first_min_uy", ok ? w.first_min : 0.0},
+                 {"next_max_uy", ok ? w.first_max : 0.0}, {"period_in_vacuo", ok_vacuo ? v.period : 0.0},
+                 {"first_min_uy_in_vacuo", ok_vacuo ? v.first_min : 0.0},
+                 {"period_ratio", ok && ok_vacuo ? w.period / v.period : 0.0},
+                 {"note", "period: twice the mean half period between the turning points of uy(A) (fsi::flap_swing); 0 until uy(A) has a minimum"}};
+    j["reference"] = {{"source", "Turek & Hron 2006, Table 6 (CSM3, the flag in vacuo)"}, {"frequency", 1.0995}, {"uy_min", -128.767e-3}};
+    if (ok && ok_vacuo)
+      std::printf("turek_hron: flap (rho_f %g) level %d dt %g: period %.5f s, in vacuo %.5f s (x %.4f; CSM3 %.5f s); first min uy(A) %.4e m "
+                  "(in vacuo %.4e)\n", s.density, s.level, s.dt, w.period, v.period, w.period / v.period, 1.0 / 1.0995, w.first_min, v.first_min);
+  } else {
+    j["reference"] = {{"source", "Turek & Hron 2006, Table 13"},
+                      {"ux_mean", ref.ux_mean}, {"ux_amplitude", ref.ux_amplitude}, {"uy_mean", ref.uy_mean},
+                      {"uy_amplitude", ref.uy_amplitude}, {"drag_mean", ref.drag_mean}, {"drag_amplitude", ref.drag_amplitude},
+                      {"lift_mean", ref.lift_mean}, {"lift_amplitude", ref.lift_amplitude}, {"frequency", ref.frequency}};
+    const double ubar = test == "fsi2" ? 1.0 : 2.0;
+    if (!(s.mean_velocity == ubar && s.density == 1000.0 && s.viscosity == 1e-3 && s.ramp_time == 2.0))
+      j["reference"]["note"] = "the scene changes the benchmark's inflow, ramp, density or viscosity";
+  }
   fsi::TurekHronFsiPeriod p;
   // a period of uy(A) whose swing is above round-off (1 um: the references' amplitudes are 2.5-80 mm)
   const bool periodic = fsi::turek_hron_fsi_period(rows, 0, p) && p.uy.amplitude > 1e-6;
@@ -184,7 +208,8 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
     put_stats(j, "lift", p.lift);
     j["frequency"] = p.uy.frequency;
     j["period_window"] = {p.uy.t_begin, p.uy.t_end};
-    j["errors"] = {{"ux_mean", p.ux.mean / ref.ux_mean - 1.0}, {"ux_amplitude", p.ux.amplitude / ref.ux_amplitude - 1.0},
+    if (!s.flap)  // the flap's reference is CSM3's in vacuo: its "flap" keys above
+      j["errors"] = {{"ux_mean", p.ux.mean / ref.ux_mean - 1.0}, {"ux_amplitude", p.ux.amplitude / ref.ux_amplitude - 1.0},
                    {"uy_mean", p.uy.mean / ref.uy_mean - 1.0}, {"uy_amplitude", p.uy.amplitude / ref.uy_amplitude - 1.0},
                    {"drag_mean", p.drag.mean / ref.drag_mean - 1.0}, {"drag_amplitude", p.drag.amplitude / ref.drag_amplitude - 1.0},
                    {"lift_mean", p.lift.mean / ref.lift_mean - 1.0}, {"lift_amplitude", p.lift.amplitude / ref.lift_amplitude - 1.0},
@@ -206,8 +231,11 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
     j["note"] = "no full period of uy(A) yet: the means and amplitudes are over the whole run";
   }
   const int rc = cs.finish(j, {"summary.json", "series.csv"});
-  const char* name = test == "fsi2" ? "FSI2" : "FSI3";
-  if (periodic)
+  if (periodic && s.flap)
+    std::printf("turek_hron: flap level %d dt %g to t = %g s: ux(A) %.4e +- %.4e, uy(A) %.4e +- %.4e m over the last period of uy(A), "
+                "%.4f Hz; %.2f evaluations per step; CPU %.1f s; results in %s\n", s.level, s.dt, j["end_time"].get<double>(), p.ux.mean,
+                p.ux.amplitude, p.uy.mean, p.uy.amplitude, p.uy.frequency, per_step, cpu, cs.out().c_str());
+  else if (periodic)
     std::printf("turek_hron: %s level %d dt %g to t = %g s: ux(A) %.4e +- %.4e, uy(A) %.4e +- %.4e m, drag %.3f +- %.3f, lift %.3f +- %.3f "
                 "N/m, %.4f Hz (reference %.4e +- %.4e, %.4e +- %.4e, %.2f +- %.2f, %.2f +- %.2f, %.1f Hz); %.2f evaluations per step; "
                 "CPU %.1f s; results in %s\n", name, s.level, s.dt, j["end_time"].get<double>(), p.ux.mean, p.ux.amplitude, p.uy.mean,

@@ -13,7 +13,9 @@
 //   fsi2, fsi3 -> the elastic flag in time, strongly coupled per step (apps/turek_hron/fsi_transient.cpp):
 //                 series.csv (t, drag, lift, ux, uy of A, coupling evaluations), summary.json with the means and
 //                 amplitudes over the last period of uy(A) and its frequency against Table 13, `reason` and exit
-//                 code 1 when the coupling stops.
+//                 code 1 when the coupling stops;
+//   flap       -> the weakly coupled check (CSM3's flag under gravity in the fluid at rest), the same loop:
+//                 summary.json's "flap" keys, the period of uy(A) against the same flag's in vacuo.
 //   turek_hron [--scene scenes/flow/cfd1.toml] [--out out/turek_hron] [--accuracy draft|standard|paper]
 //              [--steps N] [--dry-run] [--threads 1]
 //              [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]   (the time-dependent cfd3, fsi2, fsi3)
