@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/hash.hpp"
 #include "particles/reductions.hpp"
 
 namespace polymech::particles {
@@ -31,12 +32,7 @@ struct StartVector {
 // Uniform in [-1/2, 1/2] from a 32-bit key (an integer hash with good avalanche).
 template <class T>
 KOKKOS_INLINE_FUNCTION T hash_centered(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return T(x) / T(4294967295.0) - T(0.5);
+  return T(mix32(x)) / T(4294967295.0) - T(0.5);
 }
 
 // Kernel "polymech::particles::power_iteration_start".

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "common/mesh.hpp"
+#include "core/hash.hpp"
 
 namespace polymech::mesh {
 
@@ -129,14 +130,7 @@ struct BoxSpec {
   std::uint32_t seed = 1;
 };
 
-inline double box_hash(std::uint32_t x) {  // in [-1, 1]
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return 2.0 * (static_cast<double>(x) / 4294967295.0) - 1.0;
-}
+inline double box_hash(std::uint32_t x) { return hash_symmetric(x); }  // in [-1, 1] (kernels/core/hash.hpp)
 
 inline HexMesh make_box_mesh(const BoxSpec& s) {
   for (int d = 0; d < 3; ++d) {

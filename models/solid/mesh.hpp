@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "core/hash.hpp"
+
 namespace polymech::solid {
 
 // The map of a mapped lattice: parameter point xi (D values) -> body point x (D values).
@@ -141,14 +143,7 @@ struct BoxSpec {
 };
 
 namespace detail {
-inline double lattice_hash(std::uint32_t x) {  // in [-1, 1]
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return 2.0 * (static_cast<double>(x) / 4294967295.0) - 1.0;
-}
+inline double lattice_hash(std::uint32_t x) { return hash_symmetric(x); }  // in [-1, 1] (kernels/core/hash.hpp)
 }  // namespace detail
 
 // The box [origin, origin + lengths] in D dimensions (the first D entries of the spec).

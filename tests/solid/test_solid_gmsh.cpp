@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "common/hex_mesh.hpp"
+#include "core/hash.hpp"
 #include "io/gmsh_msh.hpp"
 #include "solid/analysis.hpp"
 #include "solid/cases.hpp"
@@ -35,14 +36,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::uint32_t mix(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
+std::uint32_t mix(std::uint32_t x) { return polymech::mix32(x); }
 
 // The 24 proper rotations of the reference cube as signed axis permutations: new axis k is old axis perm[k]
 // times sign[k] (det +1, so a rotated hexahedron keeps det J > 0).
