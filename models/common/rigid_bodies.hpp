@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/clock.hpp"
 #include "common/explicit_model.hpp"
 #include "common/run.hpp"
 #include "rigid/rigid_body.hpp"
@@ -46,22 +47,22 @@ class RigidBodies {
   void add_contact_forces() {}
   void advance_second_half() {
     for (std::size_t b = 0; b < count(); ++b) bodies_(b).kick(0.5 * dt_);
-    ++step_;
+    clock_.tick();
   }
   void step() { explicit_step(*this); }
 
   double dt() const { return dt_; }
-  double time() const { return static_cast<double>(step_) * dt_; }
-  std::int64_t step_index() const { return step_; }
-  void set_step_index(std::int64_t k) { step_ = k; }
+  double time() const { return clock_.time(dt_); }
+  std::int64_t step_index() const { return clock_.index(); }
+  void set_step_index(std::int64_t k) { clock_.set_index(k); }
   const StateRegistry& state() const { return state_; }
   void save(Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
-    a.put(prefix + "step", step_);
+    clock_.save(a, prefix);
   }
   void load(const Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
-    step_ = a.get<std::int64_t>(prefix + "step");
+    clock_.restore(a, prefix);
     prepared_ = true;
   }
 
@@ -88,7 +89,7 @@ class RigidBodies {
  private:
   HostBodies bodies_;
   double dt_;
-  std::int64_t step_ = 0;
+  StepClock clock_;  // step index and time (models/common/clock.hpp)
   bool prepared_ = false;
   StateRegistry state_;
 };

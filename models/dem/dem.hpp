@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "common/clock.hpp"
 #include "common/contact_pairs_archive.hpp"
 #include "common/explicit_model.hpp"
 #include "common/particle_health.hpp"
@@ -118,8 +119,8 @@ class Dem {
   // sphere list's displacement check in one pass (kick_drift_start); the second half kick is the gather's
   // pass (sphere_sphere_gather with h). With clumps, the members' motion is the clumps': separate passes.
   void advance_first_half() {
-    if (wheel_) wheel_drive_.first_half(step_, cfg_.dt, s_, mesh_);
-    if (tyre_) tyre_drive_.first_half(step_, cfg_.dt, s_, mesh_);
+    if (wheel_) wheel_drive_.first_half(clock_.index(), cfg_.dt, s_, mesh_);
+    if (tyre_) tyre_drive_.first_half(clock_.index(), cfg_.dt, s_, mesh_);
     const T dt = T(cfg_.dt);
     if (!clumps_) {
       moved_ = kick_drift_start(s_, T(0.5) * dt, dt, gravity(), pairs_.queries_at_build());
@@ -164,8 +165,8 @@ class Dem {
     } else if (surfaces_) {
       facet_pairs_.update(s_.x, mesh_.centroid);
       sphere_facet_forces(s_, mesh_, facet_pairs_.list(), facet_pairs_.history().values, pw_, friction_, dt,
-                          wheel_ ? wheel_drive_.motion(step_, cfg_.dt) : SurfaceMotion<T>(), wheel_drive_.reaction());
-      if (wheel_) wheel_drive_.add_loads(step_, cfg_.dt);
+                          wheel_ ? wheel_drive_.motion(clock_.index(), cfg_.dt) : SurfaceMotion<T>(), wheel_drive_.reaction());
+      if (wheel_) wheel_drive_.add_loads(clock_.index(), cfg_.dt);
     }
     if (clumps_) {
       sphere_sphere_gather(s_, transposed_, pair_load_);
@@ -188,13 +189,13 @@ class Dem {
       clump_kick(clumps_set_, 0.5 * cfg_.dt);
       clump_members(s_, clumps_set_, false);
     }
-    ++step_;
+    clock_.tick();
   }
 
   double dt() const { return cfg_.dt; }
-  double time() const { return static_cast<double>(step_) * cfg_.dt; }
-  std::int64_t step_index() const { return step_; }
-  void set_step_index(std::int64_t s) { step_ = s; }
+  double time() const { return clock_.time(cfg_.dt); }
+  std::int64_t step_index() const { return clock_.index(); }
+  void set_step_index(std::int64_t s) { clock_.set_index(s); }
   const TimeStepLimit& limit() const { return limit_; }
   const Config& config() const { return cfg_; }
   const SphereSet<T>& spheres() const { return s_; }
@@ -219,8 +220,8 @@ class Dem {
 
   // The wheel (effect rigid_wheel) after the last step.
   WheelState wheel() const {
-    if (tyre_) return tyre_drive_.state(step_, cfg_.dt);
-    return wheel_ ? wheel_drive_.state(step_, cfg_.dt) : WheelState();
+    if (tyre_) return tyre_drive_.state(clock_.index(), cfg_.dt);
+    return wheel_ ? wheel_drive_.state(clock_.index(), cfg_.dt) : WheelState();
   }
   // The spheres' total force on the wheel (tyre) and its moment about the wheel's (rim's) centre (last step).
   std::array<double, 6> wheel_contact() const { return tyre_ ? tyre_drive_.contact() : wheel_drive_.contact(); }
@@ -249,13 +250,13 @@ class Dem {
   // continues bit for bit.
   void save(models::Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
-    a.put(prefix + "step", step_);
+    clock_.save(a, prefix);
     models::save_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
     if (surfaces_) models::save_contact_pairs(a, prefix + "facet_pairs/", facet_pairs_);
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
-    step_ = a.get<std::int64_t>(prefix + "step");
+    clock_.restore(a, prefix);
     models::load_contact_pairs(a, prefix + "sphere_pairs/", pairs_);
     transposed_at_ = -1;
     planes_at_ = -1;
@@ -414,7 +415,7 @@ class Dem {
   EntryLoadView<T> entry_load_;         // per sphere-facet entry: force on the tyre and corner weights (fe_tyre)
   int by_facet_at_ = -1;                // the facet_pairs_.builds() by_facet_ is of
   models::StateRegistry state_;
-  std::int64_t step_ = 0;
+  models::StepClock clock_;  // step index and time (models/common/clock.hpp)
   bool prepared_ = false;
   bool forces_started_ = false;  // kick_drift_start did start_forces' work this step
   bool gather_pending_ = false;  // the sphere-sphere gather waits for the second half kick

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "common/archive.hpp"
+#include "common/clock.hpp"
 #include "common/particle_health.hpp"
 #include "common/run.hpp"
 #include "common/state.hpp"
@@ -111,7 +112,7 @@ class Isph {
     neighbors::for_each_row("polymech::sph::divergence_fluid", ff_, sph::FluidDivergence<T, D>{f_, par_});
     neighbors::for_each_row("polymech::sph::diagonal_fluid", ff_, sph::FluidDiagonal<T, D>{f_, par_, diag_});
     neighbors::for_each_row("polymech::sph::ppe_rhs", fw_, sph::WallDivergenceRhs<T, D>{f_, wp_, par_, diag_});
-    ppe_.solve(f_, wp_, par_, ff_, fw_, gf_, box_, step_);
+    ppe_.solve(f_, wp_, par_, ff_, fw_, gf_, box_, clock_.index());
     neighbors::for_each_row("polymech::sph::ghost_pressure", gf_,
                             sph::GhostPressure<T, D>{f_, wp_, par_, f_.pressure, true});
     neighbors::for_each_row("polymech::sph::pressure_gradient", ff_, sph::FluidPressureGradient<T, D>{f_, par_});
@@ -120,13 +121,13 @@ class Isph {
     if constexpr (D == 2) {
       if (body_) escaped_ += body_model_.advance(fw_, gf_, f_, wp_, par_, time(), ghost_det_min());
     }
-    ++step_;
+    clock_.tick();
   }
 
   double dt() const { return cfg_.dt; }
-  double time() const { return static_cast<double>(step_) * cfg_.dt; }
-  std::int64_t step_index() const { return step_; }
-  void set_step_index(std::int64_t s) { step_ = s; }
+  double time() const { return clock_.time(cfg_.dt); }
+  std::int64_t step_index() const { return clock_.index(); }
+  void set_step_index(std::int64_t s) { clock_.set_index(s); }
   const Config& config() const { return cfg_; }
   Index particles() const { return f_.size(); }
   Index wall_points() const { return wp_.size(); }
@@ -175,7 +176,7 @@ class Isph {
   // neighbour lists are recomputed from these at the start of every step.
   void save(models::Archive& a, const std::string& prefix) const {
     state_.save(a, prefix + "state/");
-    a.put(prefix + "step", step_);
+    clock_.save(a, prefix);
     body_model_.save(a, prefix + "body");
     const PpeRecord& last = ppe_.last();
     const long long counts[4] = {ppe_.iterations_total(), ppe_.solves(), escaped_, static_cast<long long>(last.iterations)};
@@ -187,7 +188,7 @@ class Isph {
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
-    step_ = a.get<std::int64_t>(prefix + "step");
+    clock_.restore(a, prefix);
     body_model_.load(a, prefix + "body");
     const auto counts = a.get_vector<long long>(prefix + "counts");
     const auto reals = a.get_vector<double>(prefix + "reals");
@@ -302,7 +303,7 @@ class Isph {
   neighbors::NeighborList ff_, fw_, gf_;
   long long escaped_ = 0;
   models::StateRegistry state_;
-  std::int64_t step_ = 0;
+  models::StepClock clock_;  // step index and time (models/common/clock.hpp)
 };
 
 }  // namespace polymech::isph

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "common/clock.hpp"
 #include "common/explicit_model.hpp"
 #include "common/host_copy.hpp"
 #include "common/particle_health.hpp"
@@ -139,14 +140,14 @@ class MpsElastic {
   }
   // Probes and crack-state fractions at this step's state (u and e of step k, time t_k).
   void observe() {
-    if (probes_.count() > 0 && step_ % cfg_.probe_every == 0) sample();
+    if (probes_.count() > 0 && clock_.index() % cfg_.probe_every == 0) sample();
   }
   void add_contact_forces() { crack_.add_contact_forces(f_); }
   void advance_second_half() {
     const T dt = static_cast<T>(cfg_.dt);
     particles::symplectic_euler(f_, dt);  // eqs. (13)-(14)
     if (rotation_) mps::rotation_update(f_, dt);  // eqs. (15)-(16)
-    ++step_;
+    clock_.tick();
     const double t = time();
     if (excitation_on_ && pulse_.active(t)) {
       const double u_old = pulse_.displacement(t - cfg_.dt);
@@ -155,11 +156,11 @@ class MpsElastic {
   }
 
   double dt() const { return cfg_.dt; }
-  double time() const { return static_cast<double>(step_) * cfg_.dt; }
+  double time() const { return clock_.time(cfg_.dt); }
   // Time at which the prescribed excitation ends (0 without one); afterwards the system is free.
   double excitation_end_time() const { return excitation_on_ ? pulse_.duration() : 0.0; }
-  std::int64_t step_index() const { return step_; }
-  void set_step_index(std::int64_t k) { step_ = k; }
+  std::int64_t step_index() const { return clock_.index(); }
+  void set_step_index(std::int64_t k) { clock_.set_index(k); }
   Index particles() const { return n_; }
   Offset bonds() const { return family_.num_pairs; }
   double n0() const { return n0_; }
@@ -180,7 +181,7 @@ class MpsElastic {
   // histories), and back: the run continues bit for bit (models/common/run.hpp).
   void save(models::Archive& a, const std::string& prefix) {
     state_.save(a, prefix + "state/");
-    a.put(prefix + "step", step_);
+    clock_.save(a, prefix);
     probes_.save(a, prefix + "probes/");
     const std::vector<std::vector<double>> h = {contact_history_.times, contact_history_.separation, contact_history_.stick,
                                                 contact_history_.slip};
@@ -188,7 +189,7 @@ class MpsElastic {
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
-    step_ = a.get<std::int64_t>(prefix + "step");
+    clock_.restore(a, prefix);
     probes_.load(a, prefix + "probes/");
     const auto h = a.get_columns<double>(prefix + "contact_history");
     if (h.size() != 4) throw std::runtime_error("checkpoint: contact_history needs 4 columns");
@@ -352,7 +353,7 @@ class MpsElastic {
   mps::ElasticParams<T> params_{};
   mps::ElasticFields<T> f_;
   neighbors::BondFamily family_;
-  std::int64_t step_ = 0;
+  models::StepClock clock_;  // step index and time (models/common/clock.hpp)
   // excitation
   bool excitation_on_ = false;
   mps::Pulse pulse_;

@@ -21,6 +21,7 @@
 #include <variant>
 #include <vector>
 
+#include "common/clock.hpp"
 #include "common/explicit_model.hpp"
 #include "common/host_copy.hpp"
 #include "common/particle_health.hpp"
@@ -130,12 +131,12 @@ class NosbPd {
     work_dt_ = T(0);
     const T h = T(0.5) * static_cast<T>(cfg_.dt), damping = static_cast<T>(cfg_.mass_damping);
     particles::kick(f_, h, damping);
-    ++step_;
+    clock_.tick();
   }
 
-  double time() const { return static_cast<double>(step_) * cfg_.dt; }
-  std::int64_t step_index() const { return step_; }
-  void set_step_index(std::int64_t k) { step_ = k; }
+  double time() const { return clock_.time(cfg_.dt); }
+  std::int64_t step_index() const { return clock_.index(); }
+  void set_step_index(std::int64_t k) { clock_.set_index(k); }
   double dt() const { return cfg_.dt; }
   Index particles() const { return n_; }
   Offset bonds() const { return family_.num_pairs; }
@@ -153,7 +154,7 @@ class NosbPd {
   // short-range list's build positions), and back: the run continues bit for bit.
   void save(models::Archive& a, const std::string& prefix) {
     state_.save(a, prefix + "state/");
-    a.put(prefix + "step", step_);
+    clock_.save(a, prefix);
     if (verlet_ && verlet_->builds() > 0) {
       a.put(prefix + "short_range_builds", verlet_->builds());
       models::StateRegistry r;
@@ -163,7 +164,7 @@ class NosbPd {
   }
   void load(const models::Archive& a, const std::string& prefix) {
     state_.load(a, prefix + "state/");
-    step_ = a.get<std::int64_t>(prefix + "step");
+    clock_.restore(a, prefix);
     prepared_ = true;  // the accelerations of this state are part of it
     if (verlet_ && a.has(prefix + "short_range_builds")) {
       VecView<T, D> x("polymech::nosb_pd::short_range_x_at_build", static_cast<std::size_t>(n_));
@@ -381,7 +382,7 @@ class NosbPd {
   VecView<T, D> positions_;
   View1<T> short_range_energy_;
   std::unique_ptr<neighbors::VerletList<T, D>> verlet_;
-  std::int64_t step_ = 0;
+  models::StepClock clock_;  // step index and time (models/common/clock.hpp)
   models::StateRegistry state_;
 };
 
