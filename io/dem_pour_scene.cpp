@@ -51,7 +51,8 @@ void read_wheel(const SceneTable& t, const dem::PourSpec& p, double duration, de
 }
 
 // [tyre] (the `fe_tyre` effect, seed 002 paper 2 sec. 4; models/dem/tyre_drive.hpp): the FE tyre's lattice,
-// inflation, damping and tread rubber (its size is [wheel]'s radius and width).
+// inflation, damping and tread rubber (its size is [wheel]'s radius and width), and its wall ("smeared" or
+// "layered").
 void read_tyre(const SceneTable& t, dem::TyreInit& y) {
   if (t.has("cells")) {
     const auto cells = t.reals("cells", Range{1.0, 1e5, false, false, "cells"});
@@ -71,6 +72,11 @@ void read_tyre(const SceneTable& t, dem::TyreInit& y) {
   y.tread_young = t.real("tread_youngs_modulus", y.tread_young, pl::modulus());
   y.tread_poisson = t.real("tread_poisson_ratio", y.tread_poisson, Range{-1.0, 0.5, true, true});
   y.mass = t.real("mass", y.mass, pl::mass());
+  // the wall's law (models/solid/tyre.hpp): the smeared one (default) or the layered wall
+  y.layered = t.choice("wall", {"smeared", "layered"}, "smeared") == "layered";
+  if (y.layered && (y.through < 3 || y.through % 2 == 0))
+    t.fail("wall", "is \"layered\", which needs an odd number of cells through the wall >= 3 (cells[2] = " + std::to_string(y.through) +
+                       "): rubber, the cord layer in the middle, rubber");
   t.finish();
 }
 

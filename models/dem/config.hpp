@@ -56,6 +56,8 @@ struct TyreInit {
   double tread_young = 6.0e6;                // the tread rubber's E and nu for the sphere-tread Hertz law
   double tread_poisson = 0.49;
   double mass = 37.6;                        // kg: the tyre's own mass (its density follows from its volume)
+  bool layered = false;                      // the wall: false, the smeared law; true, rubber / cord layer / rubber
+                                             // (solid::TyreSpec::layered; needs an odd `through` >= 3)
 };
 
 struct Config {

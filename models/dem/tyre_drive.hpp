@@ -67,6 +67,7 @@ class TyreDrive {
     ts.outer_radius = spec.radius;
     ts.width = spec.width;
     ts.mass = tyre.mass;
+    ts.layered = tyre.layered;
     const solid::TyreLaw law = solid::tyre_equivalent_law(ts);
     solid::Config<3> c;
     c.mesh = solid::make_tyre(ts, tyre.around, tyre.across, tyre.through);
@@ -86,6 +87,7 @@ class TyreDrive {
     o.dt = dt;
     o.damping = tyre.damping;
     o.damping_frame = 0;
+    o.cell_scale = solid::tyre_cell_scale(ts, tyre.around, tyre.across, tyre.through);  // empty: the smeared law
     const double ramp = tyre.inflate_to;
     o.load_factor = [ramp](double t) { return t < ramp ? t / ramp : 1.0; };
     solid_ = std::make_shared<Solid>(c, solid::HyperelasticLaw(law.law), o, std::vector<solid::FollowerPressure>{{"zmin", tyre.pressure}},

@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "io/dem_pour_scene.hpp"
@@ -113,4 +115,27 @@ TEST(DemScenes, ImplausibleValuesAreRefused) {
   expect_error(replace_once(kBase, "speed = 0.2", "speed = -1"), "speed = -1", {"impact.speed"});
   expect_error(replace_once(kBase, "target = \"plane\"", "target = \"plane\"\nangles = [95]"), "angles = [95]",
                {"impact.angles"});
+}
+
+// [tyre] wall = "smeared" | "layered" (issue 37: the layered wall needs an odd cells[2] >= 3).
+TEST(DemScenes, TyreWallKey) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  std::ifstream in(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string base = text.str();
+  const auto pour = [](const fs::path& p) { io::load_dem_pour_scene(p); };
+  const std::string layered = replace_once(base, "mass = 37.6", "mass = 37.6\nwall = \"layered\"");
+  polymech::testing::expect_load_error(layered, pour, line_of(layered, "wall = \"layered\""), {"wall", "odd", "cells[2] = 1"});
+  const std::string rebar = replace_once(base, "mass = 37.6", "mass = 37.6\nwall = \"rebar\"");
+  polymech::testing::expect_load_error(rebar, pour, line_of(rebar, "wall = \"rebar\""), {"wall", "smeared", "layered"});
+  const fs::path file = fs::temp_directory_path() / "polymech_test_tyre_wall.toml";
+  {
+    std::ofstream out(file);
+    out << replace_once(layered, "cells = [48, 12, 1]", "cells = [48, 12, 3]");
+  }
+  EXPECT_TRUE(io::load_dem_pour_scene(file).config.tyre.layered);
+  EXPECT_FALSE(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.layered);
+  fs::remove(file);
 }
