@@ -52,6 +52,7 @@
 #include "flow/analysis.hpp"
 #include "flow/time_state_archive.hpp"
 #include "fsi/turek_hron_fsi.hpp"
+#include "solid/start_mass.hpp"
 
 namespace polymech::fsi {
 
@@ -168,12 +169,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
     solid_->set_inertia(c0, case_.rho_s, models::to_device<double>("polymech::fsi::newmark_predictor", u_pred));
     solid_displacement(std::vector<double>(ns, 0.0));
     const std::vector<double> u = solid_->displacement_host();
-    for (std::size_t i = 0; i < ns; ++i) {
-      const double a = c0 * (u[i] - u_pred[i]);
-      v_n_[i] += dt * ((1.0 - gamma_) * a_n_[i] + gamma_ * a);
-      a_n_[i] = a;
-    }
-    u_n_ = u;
+    end_newmark_step(u, u_pred, c0, dt);
     ++vacuo_steps_;
     TurekHronFsiStep out;
     out.t = static_cast<double>(vacuo_steps_) * dt;
@@ -247,12 +243,7 @@ class TurekHronFsiTransient : public TurekHronFsi {
                                " after " + std::to_string(last_.iterations) + " evaluations: " + last_.reason);
     // the step's end: the solid at G(x_k), Newmark's update; the mesh history of the fluid's mesh (x_k)
     const std::vector<double> u = solid_->displacement_host();
-    for (std::size_t i = 0; i < ns; ++i) {
-      const double a = c0 * (u[i] - u_pred[i]);
-      v_n_[i] += dt * ((1.0 - gamma_) * a_n_[i] + gamma_ * a);
-      a_n_[i] = a;
-    }
-    u_n_ = u;
+    end_newmark_step(u, u_pred, c0, dt);
     d_m_ = std::move(d_n_);
     d_n_ = std::move(d_last);
     x_n_ = std::move(x_last);  // the interface displacement of the fluid's mesh at t_n+1 (the last iterate)
@@ -269,20 +260,24 @@ class TurekHronFsiTransient : public TurekHronFsi {
   }
 
  private:
+  // Newmark's update at the step's end from the solid's displacement u at t_n+1 (average acceleration:
+  // a = c0 (u - u_pred), v += dt ((1 - gamma) a_n + gamma a)).
+  void end_newmark_step(const std::vector<double>& u, const std::vector<double>& u_pred, double c0, double dt) {
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      const double a = c0 * (u[i] - u_pred[i]);
+      v_n_[i] += dt * ((1.0 - gamma_) * a_n_[i] + gamma_ * a);
+      a_n_[i] = a;
+    }
+    u_n_ = u;
+  }
+
   // Released from rest under dead loads (gravity): a_0 = (rho_s M)^-1 f_ext on the free DoFs (f_int(0) = 0), the
   // flag's acceleration in vacuo (models/solid/finite_strain_dynamics.hpp's start()); in a fluid the true one is
   // smaller by the added mass (unknown before the first step): the first step's error is O(dt) in the velocity.
   std::vector<double> vacuum_start_acceleration() const {
-    solid::Triplets m = solid::assemble_mass(solid_->assembly_input(), case_.rho_s);
     const auto& mask = solid_->constrained_mask();
-    for (std::size_t i = 0; i < mask.size(); ++i)
-      if (mask[i]) {
-        m.rows.push_back(static_cast<std::int64_t>(i));
-        m.cols.push_back(static_cast<std::int64_t>(i));
-        m.values.push_back(1.0);
-      }
     solvers::HostSparseLU lu;
-    lu.factor(m.n, m.rows, m.cols, m.values);
+    solid::factor_start_mass(lu, solid_->assembly_input(), case_.rho_s, mask);
     std::vector<double> a = models::to_host(solid_->external_force());
     for (std::size_t i = 0; i < mask.size(); ++i)
       if (mask[i]) a[i] = 0.0;

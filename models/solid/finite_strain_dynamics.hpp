@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "solid/hyperelastic.hpp"
+#include "solid/start_mass.hpp"
 
 namespace polymech::solid {
 
@@ -67,16 +68,8 @@ class HyperelasticNewmark {
     View1<T> r("polymech::solid::fsd_initial_residual", solid_.dof_count());
     const double rn = solid_.residual(solid_.displacement(), s(0.0), r);
     if (!std::isfinite(rn)) throw std::runtime_error("solid::HyperelasticNewmark: the initial state does not evaluate");
-    Triplets m = assemble_mass(solid_.assembly_input(), o_.density);
-    const auto& mask = solid_.constrained_mask();
-    for (std::size_t i = 0; i < mask.size(); ++i)
-      if (mask[i]) {
-        m.rows.push_back(static_cast<std::int64_t>(i));
-        m.cols.push_back(static_cast<std::int64_t>(i));
-        m.values.push_back(1.0);
-      }
     solvers::HostSparseLU lu;
-    lu.factor(m.n, m.rows, m.cols, m.values);
+    factor_start_mass(lu, solid_.assembly_input(), o_.density, solid_.constrained_mask());
     solvers::scale(solid_.dof_count(), T(-1), r, r);  // s f_ext - f_int, zero on the constrained rows
     detail::HostLUPreconditioner<T>{&lu}.apply(r, a_);
     t_ = 0.0;
