@@ -24,6 +24,7 @@
 
 #include "support/kernel_times.hpp"
 #include "dem/dem.hpp"
+#include "dem/layer_cases.hpp"
 #include "dem/pour.hpp"
 
 namespace pm = polymech;
@@ -192,6 +193,32 @@ void BM_DemPour(benchmark::State& state) {
   state.counters["share_integrator"] = share(kIntegrator);
 }
 
+// The FE tyre standing on a layer of spheres at the full load (dm::cases::tyre_on_a_layer, 16 x 6 cells of
+// order 1 round and across): wall range(0) = 0 smeared (1 cell through), 1 layered (3 cells: rubber / cord /
+// rubber, its stable step about a quarter); range(1) = the tyre's substeps per DEM step (1: one common step,
+// the smaller of the two; 0: subcycled, the DEM's step and as many tyre steps as its own needs). Timed: 5 ms of
+// simulated time after 15 ms of inflation and loading. Counter simulated_ms_per_s: simulated time per second.
+void BM_TyreOnALayer(benchmark::State& state) {
+  dm::Config c = dm::cases::tyre_on_a_layer(0.0, 0.010);
+  c.tyre.layered = state.range(0) == 1;
+  c.tyre.through = c.tyre.layered ? 3 : 1;
+  c.tyre.substeps = static_cast<int>(state.range(1));
+  dm::Dem<double> m(c);
+  const auto steps = [&](double t) { return static_cast<std::int64_t>(std::llround(t / m.dt())); };
+  pm::models::run(m, steps(0.015));
+  const std::int64_t n = steps(0.005);
+  for (auto _ : state) {
+    pm::models::run(m, n);
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * n);  // DEM steps
+  state.counters["simulated_ms_per_s"] = benchmark::Counter(5.0 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["dem_dt"] = m.dt();
+  state.counters["tyre_dt"] = m.tyre().solid().time_step();
+  state.counters["substeps"] = m.tyre().substeps();
+  state.counters["tyre_dofs"] = double(m.tyre().solid().dof_count());
+}
+
 void BM_DemStepSpheres(benchmark::State& state) { dem_step(state, false); }
 void BM_DemStepCubeClumps(benchmark::State& state) { dem_step(state, true); }
 
@@ -199,4 +226,5 @@ void BM_DemStepCubeClumps(benchmark::State& state) { dem_step(state, true); }
 
 BENCHMARK(BM_DemStepSpheres)->Arg(10)->Arg(22)->Arg(40)->Arg(47)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DemPour)->Arg(30000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TyreOnALayer)->Args({0, 1})->Args({1, 1})->Args({1, 0})->Args({0, 0})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DemStepCubeClumps)->Arg(10)->Arg(20)->Arg(47)->Unit(benchmark::kMicrosecond);

@@ -74,6 +74,9 @@ void read_tyre(const SceneTable& t, dem::TyreInit& y) {
   y.mass = t.real("mass", y.mass, pl::mass());
   // the wall's law (models/solid/tyre.hpp): the smeared one (default) or the layered wall
   y.layered = t.choice("wall", {"smeared", "layered"}, "smeared") == "layered";
+  // the tyre's steps per DEM step (models/dem/tyre_drive.hpp): 1, one common step (the smaller of the two
+  // stable ones); 0, as many as the tyre's stable step needs under the spheres' (subcycling); n, exactly n
+  y.substeps = static_cast<int>(t.integer("substeps", y.substeps, 0, 1000));
   if (y.layered && (y.through < 3 || y.through % 2 == 0))
     t.fail("wall", "is \"layered\", which needs an odd number of cells through the wall >= 3 (cells[2] = " + std::to_string(y.through) +
                        "): rubber, the cord layer in the middle, rubber");
@@ -208,7 +211,9 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   if (fx.has("fe_tyre")) {  // the tyre's explicit steps after the set-down: 3.6e6 DoF-steps/s (docs/VALIDATION.md, the tyre alone)
     const auto& y = c.tyre;
     const double dofs = 3.0 * (y.around * y.order) * (y.across * y.order + 1.0) * (y.through * y.order + 1.0);
-    out.cost.seconds += (out.duration - c.wheel.start) / c.dt * dofs / 3.6e6;
+    // (subcycled: substeps tyre steps per DEM step; with 0, "as it needs", counted as one: its stable step is
+    // known only once the tyre is built)
+    out.cost.seconds += (out.duration - c.wheel.start) / c.dt * std::max(1, y.substeps) * dofs / 3.6e6;
     out.cost.bytes += dofs * 60.0 * 8.0;
     out.cost.rate += "; the tyre's " + format_number(dofs) + " DoFs at 3.6e6 DoF-steps/s after the set-down";
   }

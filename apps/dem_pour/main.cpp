@@ -103,7 +103,8 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                   {"time_driven", w.time}};
     if (c.effects.has("fe_tyre"))  // the deformable tyre (issue 37): its lattice and inflation; the wheel's facets are its surface's
       j["tyre"] = {{"cells", {c.tyre.around, c.tyre.across, c.tyre.through}}, {"order", c.tyre.order}, {"pressure", c.tyre.pressure},
-                   {"wall", c.tyre.layered ? "layered" : "smeared"},
+                   {"wall", c.tyre.layered ? "layered" : "smeared"}, {"substeps", model.tyre().substeps()},
+                   {"time_step", model.tyre().solid().time_step()},
                    {"dofs", model.tyre().solid().dof_count()}, {"critical_step", model.tyre().solid().critical_time_step()},
                    {"surface_facets", model.surface().facet_count()}, {"damping", c.tyre.damping}};
     files.insert(files.end(), {"wheel.csv", "track_profile.csv"});

@@ -58,6 +58,8 @@ struct TyreInit {
   double mass = 37.6;                        // kg: the tyre's own mass (its density follows from its volume)
   bool layered = false;                      // the wall: false, the smeared law; true, rubber / cord layer / rubber
                                              // (solid::TyreSpec::layered; needs an odd `through` >= 3)
+  int substeps = 1;                          // the tyre's steps per DEM step (dem/tyre_drive.hpp): 1, one common step
+                                             // (the smaller); 0, as many as the tyre needs under the DEM's; n > 1, n
 };
 
 struct Config {

@@ -89,11 +89,17 @@ class Dem {
     allocate_planes();
     if (tyre_) {
       if (!surfaces_ || wheel_) throw std::invalid_argument("dem: effect fe_tyre needs fe_surfaces and excludes rigid_wheel");
-      // one common step: the smaller of the spheres' and the tyre's (safety x its critical step) when the scene
-      // gives none; a given step above the tyre's is refused (solid::HyperelasticExplicit's message)
-      tyre_drive_ = TyreDrive<T>(cfg_.wheel, cfg_.tyre, automatic ? 0.0 : cfg_.dt);
-      if (automatic && tyre_drive_.solid().time_step() < cfg_.dt) cfg_.dt = tyre_drive_.solid().time_step();
-      tyre_drive_.set_time_step(cfg_.dt);
+      // one common step (substeps 1): the smaller of the spheres' and the tyre's (safety x its critical step) when
+      // the scene gives none; a given step above the tyre's is refused (solid::HyperelasticExplicit's message).
+      // Subcycled (substeps 0 or > 1): the DEM's step, the tyre's dt / k (dem/tyre_drive.hpp).
+      const bool common = cfg_.tyre.substeps == 1;
+      tyre_drive_ = TyreDrive<T>(cfg_.wheel, cfg_.tyre, automatic || !common ? 0.0 : cfg_.dt);
+      if (common) {
+        if (automatic && tyre_drive_.solid().time_step() < cfg_.dt) cfg_.dt = tyre_drive_.solid().time_step();
+        tyre_drive_.set_time_step(cfg_.dt);
+      } else {
+        tyre_drive_.subcycle(cfg_.dt, cfg_.tyre.substeps);
+      }
       cfg_.surface = tyre_drive_.surface();
     }
     if (surfaces_) allocate_surface();

@@ -18,10 +18,21 @@
 //   second_half: the tyre's forces at t + dt with those node forces as external forces, its second kick.
 // The momentum the spheres lose is what the tyre's nodes gain (to round-off), and what reaches the rim through
 // the tied beads is the rim's reaction: the rim's vertical and tractive forces are the gravel's through the tyre.
+//
+// Subcycling (TyreInit::substeps = k > 1, when the tyre's stable step is the smaller: a layered wall's is about a
+// quarter of the smeared one's), as the impulse form of multiple time stepping (r-RESPA: Tuckerman, Berne &
+// Martyna 1992, J. Chem. Phys. 97, 1990): the contact force is the slow force, applied as two half-kicks of
+// dt / 2 at the DEM step's ends, the tyre's own forces are integrated by k velocity Verlet steps of dt / k between
+// them. In the tyre's leapfrog this is the contact force scaled by k in the residual of the step's last inner
+// step (its half-kick of h / 2 = dt / (2k) is the DEM step's closing half-kick, and the same acceleration opens
+// the next DEM step) and zero in the k - 1 inner ones: the tyre's contact impulse per DEM step is
+// dt / 2 (F_n + F_n+1), the spheres' exactly, so momentum is still exchanged to round-off. k = 1 is the common
+// step, bit for bit.
 // Damping (TyreInit::damping) acts on the nodes' velocity relative to the rim's rigid motion, its reaction on
 // the rim, so it neither brakes the rolling nor changes the momentum.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -63,6 +74,9 @@ class TyreDrive {
       throw std::invalid_argument("dem: the tyre's rim needs radius > 0, mass > 0 and slip in [0, 1)");
     if (!(tyre.pressure >= 0) || !(tyre.inflate_to > 0) || !(tyre.damping >= 0) || tyre.order < 1 || tyre.order > 4)
       throw std::invalid_argument("dem: the tyre needs pressure >= 0, inflate_to > 0, damping >= 0 and order 1-4");
+    if (tyre.substeps < 0 || tyre.substeps > 1000)
+      throw std::invalid_argument("dem: the tyre's substeps must be 0 (as its step needs) or 1-1000");
+    contact_scale_ = std::make_shared<double>(1.0);
     solid::TyreSpec ts;
     ts.outer_radius = spec.radius;
     ts.width = spec.width;
@@ -101,6 +115,14 @@ class TyreDrive {
 
   bool enabled() const { return solid_ != nullptr; }
   void set_time_step(double dt) { solid_->set_time_step(dt); }
+  // The tyre stepped `substeps` times per DEM step of dt (0: as many as its stable step needs, at least 1): its
+  // step dt / k. Throws std::invalid_argument (solid::HyperelasticExplicit's message) when dt / k is above it.
+  void subcycle(double dt, int substeps) {
+    const double own = solid_->time_step();  // safety x its critical step
+    substeps_ = substeps > 0 ? substeps : std::max(1, static_cast<int>(std::ceil(dt / own * (1.0 - 1e-12))));
+    solid_->set_time_step(dt / substeps_);
+  }
+  int substeps() const { return substeps_; }
   bool placed() const { return record_(0).placement.placed > 0; }
   const Solid& solid() const { return *solid_; }
   // The outer surface as a DEM surface (nodes in the world, parked): quadrilaterals between neighbouring nodes
@@ -122,6 +144,11 @@ class TyreDrive {
     }
     if (!failure_.empty()) return;
     solid_->first_half();
+    *contact_scale_ = 0.0;  // the inner steps of a subcycle: the tyre's own forces only
+    for (int j = 1; j < substeps_; ++j) {
+      if (!evaluate()) return;
+      solid_->first_half();
+    }
     place(mesh);
   }
   // After the contact forces: the tyre's forces at t + dt (the spheres' node forces external) and its second
@@ -130,12 +157,8 @@ class TyreDrive {
   // the model's health check turns it into a diverged run (exit 1, the reason in summary.json).
   void second_half() {
     if (!placed() || !failure_.empty()) return;
-    try {
-      solid_->second_half();
-    } catch (const std::runtime_error& e) {
-      failure_ = e.what();
-      return;
-    }
+    *contact_scale_ = static_cast<double>(substeps_);  // the DEM step's closing half-kick (1: the common step)
+    if (!evaluate()) return;
     sum_contact();
     keep_record();
   }
@@ -175,6 +198,15 @@ class TyreDrive {
   }
 
  public:  // (public: nvcc's extended lambdas)
+  bool evaluate() {  // the tyre's forces at the end of its step and its second half-kick; false if it failed
+    try {
+      solid_->second_half();
+    } catch (const std::runtime_error& e) {
+      failure_ = e.what();
+      return false;
+    }
+    return true;
+  }
   void make_surface();
   void place(const contact::SurfaceMesh<T>& mesh) const;
   void sum_contact();
@@ -201,6 +233,8 @@ class TyreDrive {
   particles::SumPartials partials_;
   std::array<double, 6> contact_{};
   std::string failure_;
+  int substeps_ = 1;
+  std::shared_ptr<double> contact_scale_;  // the contact forces' factor in the residual, read by the solid's external force
 };
 
 }  // namespace polymech::dem

@@ -10,13 +10,14 @@
 
 namespace polymech::dem {
 
-// Kernel "polymech::dem::tyre_surface_loads": r(fe node of s) -= force(s) (the spheres' forces as external ones).
+// Kernel "polymech::dem::tyre_surface_loads": r(fe node of s) -= scale force(s) (the spheres' forces as external
+// ones; scale: TyreDrive's substeps, 1 for one common step, 0 inside a subcycle).
 template <class T>
-void subtract_surface_loads(const Kokkos::View<Index*, MemSpace>& node, const VecView<T, 3>& force, const View1<double>& r) {
+void subtract_surface_loads(const Kokkos::View<Index*, MemSpace>& node, const VecView<T, 3>& force, double scale, const View1<double>& r) {
   Kokkos::parallel_for(
       "polymech::dem::tyre_surface_loads", range(static_cast<Index>(node.extent(0))), KOKKOS_LAMBDA(const Index s) {
         const Index i = node(s);
-        for (int k = 0; k < 3; ++k) r(3 * i + k) -= double(force(s, k));
+        for (int k = 0; k < 3; ++k) r(3 * i + k) -= scale * double(force(s, k));
       });
 }
 
@@ -68,8 +69,9 @@ void TyreDrive<T>::make_surface() {
   // the spheres' forces on the surface nodes into the FE residual (r = f_int - f_ext: subtracted)
   const auto node = fe_node_;
   const auto force = force_;
-  solid_->set_external_force([node, force](double, const View1<double>&, const View1<double>&, const View1<double>& r) {
-    subtract_surface_loads(node, force, r);
+  const auto scale = contact_scale_;
+  solid_->set_external_force([node, force, scale](double, const View1<double>&, const View1<double>&, const View1<double>& r) {
+    if (*scale != 0.0) subtract_surface_loads(node, force, *scale, r);
   });
 }
 

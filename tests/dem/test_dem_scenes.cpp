@@ -137,5 +137,14 @@ TEST(DemScenes, TyreWallKey) {
   }
   EXPECT_TRUE(io::load_dem_pour_scene(file).config.tyre.layered);
   EXPECT_FALSE(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.layered);
+  // [tyre] substeps: an integer 0-1000 (0: as the tyre's step needs), 1 by default
+  const std::string negative = replace_once(base, "mass = 37.6", "mass = 37.6\nsubsteps = -2");
+  polymech::testing::expect_load_error(negative, pour, line_of(negative, "substeps = -2"), {"substeps"});
+  {
+    std::ofstream out(file);
+    out << replace_once(base, "mass = 37.6", "mass = 37.6\nsubsteps = 0");
+  }
+  EXPECT_EQ(io::load_dem_pour_scene(file).config.tyre.substeps, 0);
+  EXPECT_EQ(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.substeps, 1);
   fs::remove(file);
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "dem/dem.hpp"
+#include "dem/layer_cases.hpp"
 #include "dem/pour.hpp"
 #include "dem/wheel.hpp"
 
@@ -19,26 +20,8 @@ namespace {
 // planes, set down at 2 ms, loaded over 10-12 ms after that (the paper's ramp: the wheel bounces on the
 // spheres' Hertz springs, period ~ 28 ms, like the fluctuation of Fig. 8), driven at 0.2 m/s (12-15 ms)
 // with 20 % slip.
-// nx x ny spheres of radius r in one layer on the floor of a box just wide enough, gravel's contact law, the
-// wheel's effects.
-dm::Config layer(double r, int nx, int ny, const char* wheel_effect) {
-  dm::Config c;
-  c.particle = {5e7, 0.3, 2650};
-  c.wall = {5e7, 0.3, 2650};
-  c.restitution = 0.4;
-  c.friction = 0.5;
-  c.gravity = {0, 0, -9.81};
-  c.effects = pm::EffectSet::resolve({"friction", "damping", "fe_surfaces", wheel_effect}, dm::effect_table());
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      dm::SphereInit s;
-      s.radius = r;
-      s.position = {r + 2 * r * i, r + 2 * r * j, r};
-      c.spheres.push_back(s);
-    }
-  c.planes = dm::box_planes(2 * r * nx, 2 * r * ny);
-  return c;
-}
+using dm::cases::layer;
+using dm::cases::tyre_on_a_layer;
 
 dm::Config wheel_on_a_layer(double speed, double load_to = 0.012) {
   dm::Config c = layer(0.005, 20, 8, "rigid_wheel");
@@ -152,48 +135,21 @@ TEST(Wheel, DrivenAtTheScheduleWithSlipAndRestartedBitForBit) {
   // the kernel test SphereFacet.AMovingSurfaceDragsSpheresAndFeelsTheirReaction checks the drag)
 }
 
-namespace {
-
-// The deformable tyre (effect fe_tyre, issue 37): the paper's tyre 37x12.5R16.5 on a coarse lattice (16 x 6 x 1
-// order-1 cells: 672 DoFs) on one layer of 20 mm spheres (15 x 10) on the floor of a box, set down at once,
-// inflated to 0.35 MPa over 5 ms, loaded with the paper's 10 163 N from 5 ms to `load_to`; a light rim (10 kg).
-dm::Config tyre_on_a_layer(double speed, double load_to) {
-  dm::Config c = layer(0.02, 15, 10, "fe_tyre");
-  auto& w = c.wheel;
-  w.radius = 0.445;
-  w.width = 0.31;
-  w.mass = 10.0;
-  w.load = 10163.0;
-  w.load_from = 0.005;
-  w.load_to = load_to;
-  w.speed = speed;
-  w.speed_from = load_to;
-  w.speed_to = load_to + 0.003;
-  w.slip = 0.2;
-  w.start = 0.0;
-  w.x_start = 0.2;
-  w.y_centre = 0.2;
-  w.parked = {0.2, 0.2, 2.0};
-  c.tyre.around = 16;
-  c.tyre.across = 6;
-  c.tyre.through = 1;
-  c.tyre.order = 1;
-  c.tyre.inflate_to = 0.005;
-  c.max_speed = 1.0;
-  return c;
-}
-
-}  // namespace
+// The deformable tyre on a layer: dm::cases::tyre_on_a_layer (models/dem/layer_cases.hpp).
 
 // Standing on the layer, the tyre carries the load: over a window of steps the tyre's vertical momentum (nodes
 // and rim) changes by exactly the impulse of the gravel's force on its surface nodes less the rim's load (the
 // velocity Verlet's trapezoidal sum; the damping acts between the nodes and the rim and cancels), so the mean
 // force is the load up to that change; the tyre flattens by centimetres, and no sphere passes through the tread
 // (the layer stays one layer: the hard case of full load on a single layer).
-TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) {
+namespace {
+void stands_on_a_layer(int substeps) {
   // loaded slowly (5-100 ms: the rim bounces on the tyre with a period of about 60 ms)
-  dm::Dem<double> m(tyre_on_a_layer(0.0, 0.100));
+  dm::Config c = tyre_on_a_layer(0.0, 0.100);
+  c.tyre.substeps = substeps;
+  dm::Dem<double> m(c);
   ASSERT_TRUE(m.tyre().enabled());
+  ASSERT_EQ(m.tyre().substeps(), substeps);
   const auto steps = [&](double t) { return static_cast<std::int64_t>(std::llround(t / m.dt())); };
   pm::models::run(m, steps(0.005));  // inflated, not loaded yet: its radius
   const double inflated = m.wheel().centre[2] - m.wheel().tread_low;
@@ -211,9 +167,9 @@ TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) {
   const double dp = m.tyre().solid().momentum()[2] - p0;
   const auto w = m.wheel();
   const double deflection = inflated - (w.centre[2] - w.tread_low);
-  std::printf("tyre on a layer: dt %.3g s, mean vertical force %.1f N (load 10163), momentum change %.6g N s, impulse %.6g N s, "
+  std::printf("tyre on a layer, %d tyre step(s) of %.3g s per DEM step: dt %.3g s, mean vertical force %.1f N (load 10163), momentum change %.6g N s, impulse %.6g N s, "
               "rim sinkage %.2f mm, tread sinkage %.2f mm, inflated radius %.4f m, deflection %.2f mm\n",
-              m.dt(), fz, dp, impulse, 1e3 * w.sinkage, 1e3 * (w.bed_level - w.tread_low), inflated, 1e3 * deflection);
+              substeps, m.tyre().solid().time_step(), m.dt(), fz, dp, impulse, 1e3 * w.sinkage, 1e3 * (w.bed_level - w.tread_low), inflated, 1e3 * deflection);
   EXPECT_NEAR(dp, impulse, 1e-9 * 10163.0 * n * m.dt());
   EXPECT_NEAR(fz, 10163.0 + dp / (n * m.dt()), 0.01 * 10163.0);  // the mean, up to the end points' trapezoid halves
   EXPECT_NEAR(fz, 10163.0, 0.4 * 10163.0);                       // the rim's bounce: +19 % here, its phase CPU-dependent
@@ -222,6 +178,13 @@ TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) {
   EXPECT_LT(deflection, 0.06);
   for (pm::Index i = 0; i < m.sphere_count(); ++i) ASSERT_LT(m.sphere(i).x[2], 0.03) << "sphere " << i << " left the layer";
 }
+}  // namespace
+
+TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) { stands_on_a_layer(1); }
+
+// Subcycled (three tyre steps per DEM step, dem/tyre_drive.hpp: the contact force as the DEM step's two
+// half-kicks, r-RESPA): the same balance to round-off, the same load carried, no tunnelling.
+TEST(Tyre, SubcycledItKeepsTheMomentumBalance) { stands_on_a_layer(3); }
 
 // Driven (0.5 m/s, 20 % slip) and restarted mid-drive from a checkpoint: the tyre (its displacement, velocity,
 // acceleration, rim and clock) is part of it, so the run continues bit for bit; the rim follows the schedule.
