@@ -1,12 +1,15 @@
 // The rigid wheel of the `rigid_wheel` effect (seed 002 paper 2, sec. 4): its mesh faces outwards, it
 // comes to rest on a bed carrying exactly its load, it is driven at the prescribed speed and slip, and a
-// run restarted mid-drive continues bit for bit (the wheel is part of the checkpoint).
+// run restarted mid-drive continues bit for bit (the wheel is part of the checkpoint). The coupling of the FE tyre
+// (a sphere's contacts on a deforming FE surface, their forces returned to its nodes) against Hertz: a rigid sphere
+// pressed into an elastic FE block (dem/hertz_block.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 
 #include "dem/dem.hpp"
+#include "dem/hertz_block.hpp"
 #include "dem/layer_cases.hpp"
 #include "dem/pour.hpp"
 #include "dem/wheel.hpp"
@@ -214,4 +217,52 @@ TEST(Tyre, DrivenAndRestartedBitForBit) {
   // the prescribed travel: 0.5 m/s ramped over 7-10 ms (mid-step speeds: exact for a ramp), from x = 0.2
   EXPECT_NEAR(w.centre[0], 0.2 + 0.5 * (w.time - 0.0085), 1e-7);  // the ramp's kinks fall inside steps
   EXPECT_NEAR(w.spin, 0.5 / (0.8 * 0.445), 1e-12);
+}
+
+// A rigid sphere pressed slowly into a quarter of an elastic FE block through the sphere-facet contact, its forces
+// returned to the block's nodes (dem/hertz_block.hpp; issue 37's "deformable sphere on a plane against Hertz", in
+// its rigid-sphere-on-elastic-body reading): F(d) within 12 % of Hertz (with the half-space's settlement below the
+// block's fixed bottom put back, HertzRow::hertz_far) at d / R = 0.01 and 0.02, the exponent of F(d) between them
+// near 3/2 (with that settlement in d; the bare d's exponent is about 1.6 here), the contact radius near sqrt(R d), the node loads summing to minus the sphere's force to round-off.
+// Coarse (3 cells across a_max, a block 6 a_max deep): about 2-3 s on one thread; sweep_hertz shows finer ones.
+dm::HertzBlockSpec coarse_hertz_block() {
+  dm::HertzBlockSpec s;
+  s.cells_per_contact = 3.0;
+  s.extent = 6.0;
+  s.press_time = 10.0;
+  s.rows = 4;
+  return s;
+}
+
+TEST(HertzBlock, ARigidSphereOnTheFEBlockFollowsHertzThroughTheCoupling) {
+  const auto h = dm::hertz_block_press(coarse_hertz_block());
+  ASSERT_GE(h.rows.size(), 4u);
+  const auto& half = h.rows[1];
+  const auto& full = h.rows[3];
+  for (const auto* w : {&half, &full}) {
+    EXPECT_NEAR(w->force / w->hertz_far, 1.0, 0.12) << "d/R " << w->depth << " F " << w->force << " F_Hertz " << w->hertz_far;
+    EXPECT_NEAR(w->contact_radius / w->hertz_radius, 0.85, 0.25) << "d/R " << w->depth;  // the mesh's resolution of a
+    EXPECT_LT(w->overlap, 0.05 * w->depth);  // the DEM's own overlap is small against the indentation
+    EXPECT_LT(w->kinetic, 1e-2 * w->force * w->depth);  // quasi-static (the work done is about 0.4 F d)
+  }
+  EXPECT_NEAR(full.depth, 0.02, 0.002);
+  const double exponent = std::log(full.force / half.force) / std::log(full.depth_far / half.depth_far);
+  EXPECT_NEAR(exponent, 1.5, 0.1);
+  EXPECT_GE(full.contacts, 4);  // the contact spread over several facets
+  for (const auto& w : h.rows) EXPECT_NEAR(w.node_sum, -w.force, 1e-12 * std::fabs(w.force)) << "t " << w.time;
+}
+
+// Without the node loads returned to the FE block the same press is caught: the surface does not move and the
+// sphere's force is the stiff DEM law's on the undeformed plane, far above Hertz's at its travel.
+TEST(HertzBlock, WithoutTheNodeLoadsTheBlockDoesNotYield) {
+  dm::HertzBlockSpec s = coarse_hertz_block();
+  s.return_loads = false;
+  s.press_time = 1.0;
+  s.rows = 1;
+  const auto h = dm::hertz_block_press(s);
+  ASSERT_FALSE(h.rows.empty());
+  const auto& w = h.rows.back();
+  EXPECT_LT(std::fabs(w.depth), 1e-9);
+  const double hertz_at_travel = 4.0 / 3.0 * h.e_star * std::pow(w.travel, 1.5);  // R = 1
+  EXPECT_GT(w.force, 2.0 * hertz_at_travel);
 }
