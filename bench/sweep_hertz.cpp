@@ -3,9 +3,10 @@
 // (cells across the largest contact radius), with the CPU time of each press (accuracy against cost).
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_hertz [key=value ...]
 // keys: res=2,3,4 (cells_per_contact list), depth=0.02 (d_max / R), extent=8 (W = H in a_max), stiff=30 (DEM E* /
-// block E*), press=40 (press time in H / c_s), damping=1 (alpha in c_s / H), restitution=0.3 (the DEM contact's),
+// block E*), press=40 (press time in H / c_s), damping=1 (alpha in c_s / H), restitution=0.3 (the DEM contact's), penalty=2 (case=plate: PlateContact's beta),
 // step=0.5 (dt / the smaller of the solid's and the contact's step), ratio=1.3, order=1, rows=8,
-// out=sweep_hertz.csv. Writes CSV: res,cells_x,cells_z,dofs,steps,cpu_s,time,travel,depth,overlap,force,hertz,ratio,
+// case=sphere (the rigid sphere into the block through the DEM coupling) or plate (the block's paraboloidal tip on
+// a rigid plate, FE contact only: dem::hertz_plate_press), out=sweep_hertz.csv. Writes CSV: res,cells_x,cells_z,dofs,steps,cpu_s,time,travel,depth,overlap,force,hertz,ratio,
 // contact_radius,hertz_radius,node_sum,kinetic,contacts.
 #include <cmath>
 #include <cstdio>
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   dm::HertzBlockSpec base;
   std::vector<double> res{2.0, 3.0, 4.0};
   std::string path = "sweep_hertz.csv";
+  bool plate = false;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     const auto eq = a.find('=');
@@ -36,6 +38,8 @@ int main(int argc, char** argv) {
       std::stringstream ss(value);
       std::string item;
       while (std::getline(ss, item, ',')) res.push_back(std::atof(item.c_str()));
+    } else if (key == "case" && (value == "sphere" || value == "plate")) {
+      plate = value == "plate";
     } else if (key == "out") {
       path = value;
     } else if (number && key == "depth") {
@@ -50,6 +54,8 @@ int main(int argc, char** argv) {
       base.damping = x;
     } else if (number && key == "restitution") {
       base.restitution = x;
+    } else if (number && key == "penalty") {
+      base.plate_penalty = x;
     } else if (number && key == "step") {
       base.step_fraction = x;
     } else if (number && key == "ratio") {
@@ -59,8 +65,8 @@ int main(int argc, char** argv) {
     } else if (number && key == "rows") {
       base.rows = static_cast<int>(x);
     } else {
-      std::fprintf(stderr, "sweep_hertz: argument %d '%s': allowed res=a,b,.. depth= extent= stiff= press= damping= restitution= step= ratio= order= rows= "
-                           "(numbers) out=path\n", k, a.c_str());
+      std::fprintf(stderr, "sweep_hertz: argument %d '%s': allowed res=a,b,.. depth= extent= stiff= press= damping= restitution= penalty= step= ratio= order= rows= "
+                           "(numbers) case=sphere|plate out=path\n", k, a.c_str());
       return 2;
     }
   }
@@ -73,7 +79,7 @@ int main(int argc, char** argv) {
       dm::HertzBlockSpec spec = base;
       spec.cells_per_contact = r;
       try {
-        const auto h = dm::hertz_block_press(spec);
+        const auto h = plate ? dm::hertz_plate_press(spec) : dm::hertz_block_press(spec);
         std::printf("res %.3g: cells %d x %d x %d, %lld DoFs, first cell %.4g (a_max %.4g), dt %.4g (contact estimate %.4g), %lld steps, %d facets listed at most, "
                     "%.2f s CPU\n",
                     r, h.cells[0], h.cells[1], h.cells[2], static_cast<long long>(h.dofs), h.first_cell, h.a_max, h.dt, h.contact_step,

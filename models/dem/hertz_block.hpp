@@ -48,6 +48,7 @@
 #include "dem/tyre_drive.hpp"
 #include "neighbors/transpose.hpp"
 #include "solid/finite_strain_explicit.hpp"
+#include "solid/tyre.hpp"
 
 namespace polymech::dem {
 
@@ -66,6 +67,8 @@ struct HertzBlockSpec {
                                    // the contact's estimate (HertzBlockResult::contact_step)
   int order = 1;
   int rows = 8;
+  double plate_penalty = 2.0;      // hertz_plate_press: PlateContact's beta (k = beta m omega_max^2; stable with
+                                   // step_fraction 0.5: dt omega_max = 0.9 < 2 / sqrt(1 + beta))
   double restitution = 0.3;        // the DEM contact's (its damping against a node's chatter; 1: undamped)
   bool return_loads = true;        // false: the node loads are not given to the FE block (a check must then fail)
 };
@@ -297,6 +300,103 @@ inline HertzBlockResult hertz_block_press(const HertzBlockSpec& spec) {
       row.contact_radius = std::max(row.contact_radius, std::hypot(q[0], q[1]));
     }
     row.approach = row.travel - row.overlap;
+    row.kinetic = 4.0 * fe.kinetic_energy();
+    out.rows.push_back(row);
+  }
+  out.steps = total;
+  out.cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return out;
+}
+
+// The other reading: the elastic body's tip on a rigid plane, FE contact only (no DEM): a quarter of a block whose
+// contact face is Hertz's paraboloid z = rho^2 / (2R) (Hertz's own approximation of a sphere of radius R near its
+// contact, Johnson 1985, 4.2; the small-strain limit of an elastic sphere on a rigid plate) out to rho = 2 a_max and
+// its tangent cone beyond (which the plate never reaches; the block's corners stay valid), the other side fixed at
+// z = H, pressed by solid::PlateContact (node-to-plane penalty, beta = plate_penalty x the stiffest mode's m omega^2, damping
+// ratio 0.3; sweep_tyre's beta 0.1 leaves an overlap of about 40 % of d here) rising from z = 0. The lattice's zmax side is the contact face (PlateContact's side): the
+// map sends the lattice point (xi, eta, zeta) to (eta, xi, H - zeta + (zeta / H) tip(rho)), rho^2 = xi^2 + eta^2
+// (the swap of x and y keeps det J > 0), so the lattice's xmin is y = 0 (u_y = 0), ymin x = 0 (u_x = 0), zmin the
+// fixed side. Rows as hertz_block_press: d = u_z of the tip node, the plate's force (x 4), the contact radius the
+// largest rho of a node on or behind the plate, node_sum 0 (no DEM), overlap the plate's rise less d.
+inline HertzBlockResult hertz_plate_press(const HertzBlockSpec& spec) {
+  using T = double;
+  if (!(spec.radius > 0) || !(spec.young > 0) || !(spec.poisson > -1 && spec.poisson < 0.5) || !(spec.density > 0) ||
+      !(spec.depth_max > 0 && spec.depth_max < 0.2) || !(spec.cells_per_contact >= 1) || !(spec.ratio >= 1) ||
+      !(spec.extent >= 2) || !(spec.press_time > 0) || !(spec.damping >= 0) || !(spec.step_fraction > 0 && spec.step_fraction <= 1) ||
+      spec.rows < 1 || spec.order < 1 || spec.order > 4)
+    throw std::invalid_argument("dem::hertz_plate_press: need R, E, density > 0, nu in (-1, 0.5), depth_max in (0, 0.2), "
+                                "cells_per_contact >= 1, ratio >= 1, extent >= 2, press_time > 0, damping >= 0, "
+                                "step_fraction in (0, 1], rows >= 1, order 1-4");
+  const auto cpu0 = std::clock();
+  HertzBlockResult out;
+  const double R = spec.radius, E = spec.young, nu = spec.poisson;
+  const double e_star = E / (1.0 - nu * nu);
+  const double a_max = std::sqrt(R * spec.depth_max * R), W = spec.extent * a_max;
+  const double h0 = a_max / spec.cells_per_contact;
+  out.e_star = e_star;
+  out.a_max = a_max;
+  out.first_cell = h0;
+  const std::vector<double> px = solid::graded_planes(0.0, W, h0, spec.ratio, std::max(h0, spec.largest * a_max));
+  std::vector<double> pz = solid::graded_planes(W, 0.0, h0, spec.ratio, std::max(h0, spec.largest * a_max));
+  std::reverse(pz.begin(), pz.end());
+  solid::Config<3> c;
+  c.mesh = solid::make_tensor_box<3>({px, px, pz});
+  const double rho_p = 2.0 * a_max;  // the paraboloid out to 2 a_max, then its tangent cone (never near the plate)
+  c.mesh.map = [W, R, rho_p](const double* xi, double* x) {
+    const double rho = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1]);
+    const double tip = rho <= rho_p ? rho * rho / (2.0 * R) : rho_p * rho_p / (2.0 * R) + rho_p / R * (rho - rho_p);
+    x[0] = xi[1];
+    x[1] = xi[0];
+    x[2] = W - xi[2] + (xi[2] / W) * tip;
+  };
+  c.order = spec.order;
+  c.affine_geometry = false;
+  c.dirichlet = {{"xmin", 2u, {}}, {"ymin", 1u, {}}, {"zmin", 7u, {}}};
+  for (int k = 0; k < 3; ++k) out.cells[static_cast<std::size_t>(k)] = c.mesh.cells[static_cast<std::size_t>(k)];
+  materials::NeoHookean<double> law;
+  law.elastic.mu = E / (2.0 * (1.0 + nu));
+  law.elastic.lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  const double cs = std::sqrt(law.elastic.mu / spec.density);
+  solid::ExplicitFiniteStrainOptions o;
+  o.density = spec.density;
+  o.damping = spec.damping * cs / W;
+  solid::HyperelasticExplicit<double, 3> fe(c, solid::HyperelasticLaw(law), o);
+  out.dofs = fe.dof_count();
+  const auto& d = fe.solid().discretization();
+  const double dt = spec.step_fraction * fe.time_step();
+  fe.set_time_step(dt);
+  out.dt = dt;
+  out.contact_step = fe.time_step();
+  const double travel_max = spec.depth_max * R * 1.05;
+  const double t_end = spec.press_time * W / cs, speed = travel_max / t_end;
+  solid::PlateContact<T> plate(
+      d, fe.lumped_mass(), fe.omega_max(), spec.plate_penalty, 0.3, [speed](double t) { return speed * t; }, [speed](double) { return speed; });
+  fe.set_external_force([&plate](double t, const View1<T>& u, const View1<T>& v, const View1<T>& r) { plate.apply(t, u, v, r); });
+  const std::int64_t tip = d.node({0, 0, d.lattice[2] - 1});
+  const auto total = static_cast<std::int64_t>(std::ceil(t_end / dt));
+  const std::int64_t every = std::max<std::int64_t>(1, total / spec.rows);
+  for (std::int64_t n = 1; n <= total; ++n) {
+    fe.step();
+    if (n % every != 0 && n != total) continue;
+    HertzRow row;
+    row.time = fe.time();
+    row.travel = plate.height(fe.time());
+    const std::vector<double> u = models::to_host(fe.displacement());
+    row.depth = u[static_cast<std::size_t>(3 * tip + 2)];
+    row.overlap = row.travel - row.depth;
+    row.approach = row.depth;
+    row.force = 4.0 * plate.force();
+    row.hertz = row.depth > 0 ? 4.0 / 3.0 * e_star * std::sqrt(R) * std::pow(row.depth, 1.5) : 0.0;
+    row.hertz_radius = row.depth > 0 ? std::sqrt(R * row.depth) : 0.0;
+    const double far_field = (1.0 + nu) * (3.0 - 2.0 * nu) / (2.0 * 3.14159265358979323846 * E * W);
+    row.depth_far = row.depth + far_field * row.force;
+    row.hertz_far = row.depth_far > 0 ? 4.0 / 3.0 * e_star * std::sqrt(R) * std::pow(row.depth_far, 1.5) : 0.0;
+    for (const std::int64_t v : plate.nodes()) {
+      const std::size_t i = static_cast<std::size_t>(3 * v);
+      if (d.coordinates[i + 2] + u[i + 2] > row.travel) continue;
+      row.contact_radius = std::max(row.contact_radius, std::hypot(d.coordinates[i] + u[i], d.coordinates[i + 1] + u[i + 1]));
+    }
+    row.contacts = plate.nodes_in_contact();
     row.kinetic = 4.0 * fe.kinetic_energy();
     out.rows.push_back(row);
   }

@@ -266,3 +266,21 @@ TEST(HertzBlock, WithoutTheNodeLoadsTheBlockDoesNotYield) {
   const double hertz_at_travel = 4.0 / 3.0 * h.e_star * std::pow(w.travel, 1.5);  // R = 1
   EXPECT_GT(w.force, 2.0 * hertz_at_travel);
 }
+
+// The other reading, FE contact only: the block's paraboloidal tip (Hertz's sphere near its contact) on a rigid plate
+// (solid::PlateContact, dem::hertz_plate_press), the same coarse mesh: F(d) within 12 % of Hertz (with the
+// settlement below the fixed side) at d / R = 0.01 and 0.02, the exponent near 3/2 (under a second on one thread).
+TEST(HertzBlock, AnElasticTipOnARigidPlateFollowsHertz) {
+  const auto h = dm::hertz_plate_press(coarse_hertz_block());
+  ASSERT_GE(h.rows.size(), 4u);
+  const auto& half = h.rows[1];
+  const auto& full = h.rows[3];
+  for (const auto* w : {&half, &full}) {
+    EXPECT_NEAR(w->force / w->hertz_far, 1.0, 0.12) << "d/R " << w->depth << " F " << w->force << " F_Hertz " << w->hertz_far;
+    EXPECT_NEAR(w->contact_radius / w->hertz_radius, 1.0, 0.3) << "d/R " << w->depth;
+    EXPECT_LT(w->overlap, 0.05 * w->depth);  // the plate's penalty overlap
+    EXPECT_LT(w->kinetic, 1e-2 * w->force * w->depth);
+  }
+  const double exponent = std::log(full.force / half.force) / std::log(full.depth_far / half.depth_far);
+  EXPECT_NEAR(exponent, 1.5, 0.1);
+}
