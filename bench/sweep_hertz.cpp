@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -95,9 +96,12 @@ int main(int argc, char** argv) {
               << (w.hertz_far > 0 ? w.force / w.hertz_far : 0.0) << ","
               << w.contact_radius << "," << w.hertz_radius << "," << w.node_sum << "," << w.kinetic << "," << w.contacts << "\n";
         }
+      } catch (const std::invalid_argument& e) {  // a bad key's value: exit code 2
+        std::fprintf(stderr, "sweep_hertz: res %g: %s\n", r, e.what());
+        rc = 2;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "sweep_hertz: res %g: %s\n", r, e.what());
-        rc = 1;
+        rc = rc == 0 ? 1 : rc;
       }
     }
   }
