@@ -47,7 +47,8 @@ double lattice_neighbours(int dim, double ratio);
 // MPS elastic waves (2D): `runs` runs of `steps` steps each (mps_harmonics runs twice).
 CostEstimate mps_cost(double particles, double influence_radius, bool rotation, bool single, double steps, int runs);
 // NOSB peridynamics: particles, bonds per particle, steps.
-CostEstimate pd_cost(double particles, double bonds_per_particle, bool single, double steps);
+// elastic_only: no damage, contact, velocity viscosity or short-range force (the bond pass alone is twice as fast)
+CostEstimate pd_cost(double particles, double bonds_per_particle, bool single, double steps, bool elastic_only);
 // Matrix-free Helmholtz: DoFs, elements, order, and the solver's iteration limit.
 CostEstimate helmholtz_cost(double dofs, double elements, int order, bool single, int max_iterations);
 // DEM spheres: spheres and steps (over all runs of a scene).

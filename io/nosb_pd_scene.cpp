@@ -145,7 +145,10 @@ NosbPdScene load_nosb_pd_scene(const std::filesystem::path& file, const NosbPdSc
   // The size of the run, refused before anything is built over the body if it cannot fit.
   const np::LatticeSize size = np::lattice_size(c);
   const auto cost = [&](double steps) {
-    CostEstimate e = pd_cost(size.particles, size.bonds / std::max(1.0, size.particles), out.header.precision == "float", steps);
+    const bool elastic_only = !c.effects.has("damage") && !c.effects.has("contact") && !c.effects.has("velocity_viscosity") &&
+                              !c.effects.has("short_range");
+    CostEstimate e = pd_cost(size.particles, size.bonds / std::max(1.0, size.particles), out.header.precision == "float", steps,
+                             elastic_only);
     e.size_keys = size_keys(c, spacing, accuracy);
     return e;
   };

@@ -4,7 +4,7 @@ against measured time").
 
     /usr/bin/python3 tools/cost_table.py BIN RESULTS [--accuracy draft] [--markdown]
 
-BIN holds the apps (build/<preset>/bin); RESULTS is the --work folder of tools/compare_binaries.py
+BIN holds the apps (build/<preset>/bin); RESULTS is the folder of tools/run_drafts.sh or the --work folder of tools/compare_binaries.py
 (RESULTS/<app>/<scene>/new/summary.json, runs with --threads 1). For each scene the prediction is what
 `polymech --scene FILE --accuracy A --dry-run` prints ("predicted wall time about X s"), the
 measurement the summary's wall_seconds (for mps_harmonics: both runs). Prints one row per scene with
