@@ -30,6 +30,7 @@
 // stiffness (the cords sit at mid-surface) and underestimates the steel belt's circumferential stiffness.
 // With TyreSpec::layered the wall is layered instead (tyre_layers: the same law scaled per cell, the plies in
 // the middle cell through the wall), which keeps the membrane stiffness and drops the plies' bending share.
+// TyreSpec::belted adds a steel belt layer over the crown (tyre_layers: the layer outside the cord layer).
 //
 // Plate (PlateContact): a rigid plane z = z_p(t) below the tyre, normal +z, frictionless; each outer-surface node
 // below it gets f_z = k_i g + c_i (v_p - v_z) >= 0 (g = z_p - z_i the penetration), k_i = beta m_i omega_max^2 (a
@@ -68,6 +69,25 @@ struct TyreSpec {
   // The wall's law: false, the one smeared law (tyre_equivalent_law) in every element; true, layers through the
   // wall (tyre_layers: rubber, the cord layer in the middle cell, rubber; needs an odd n_wall >= 3).
   bool layered = false;
+  // The steel belt over the crown (issue 37; paper 2 §4 names "belt reinforcements"): with belted (needs layered),
+  // the cell layer just outside the cord layer (k = n_wall / 2 + 1, toward the tread) becomes the belt layer in the
+  // crown cells, E = E_rubber + f E_belt t_belt / h_c (tyre_layers). Values assumed (light-truck / off-road radial
+  // tyres; no data sheet of this tyre): two steel-cord plies at +-20 deg to the circumference, steel cord E 200 GPa,
+  // cord volume fraction 0.25 in a ply, 1.2 mm per ply, the belt 0.18 m wide along the contour (the inner tread arc
+  // is 0.203 m: a belt a little narrower than the tread).
+  bool belted = false;
+  double belt_modulus = 200.0e9;      // Pa: steel cord
+  double belt_fraction = 0.25;        // V_f in a belt ply
+  double belt_ply_thickness = 1.2e-3; // m
+  int belt_plies = 2;                 // crossed plies, +-belt_angle
+  double belt_angle_deg = 20.0;       // cord angle to the circumferential direction
+  double belt_half_width = 0.090;     // m, along the contour from the crown's centre line
+  // The reading of the +-20 deg plies as one isotropic modulus (the Mooney-Rivlin law is isotropic): false (the
+  // default), the laminate's circumferential membrane modulus with the lateral strain held (A11 / t: the belt
+  // stretched round the wheel between the tread and the inflated carcass; 39 GPa), which makes the layer as stiff
+  // across the crown as round it (a real +-20 deg belt is ~ 56 x softer across, A22 / t = 0.69 GPa); true, the
+  // free laminate's E_x = (A11 - A12^2 / A22) / t (lateral stress zero: the plies scissor; 0.42 GPa).
+  bool belt_laterally_free = false;
 };
 
 // The inner contour's half (the y > 0 side) from the centre line: three arcs (radius, turning angle).
@@ -212,10 +232,38 @@ inline TyreLaw tyre_equivalent_law(const TyreSpec& s) {
 // over h) to E_qi t_plies h^2 / (12 n_wall^2) (a layer h / n_wall thick at the mid-surface): the crown and the
 // walls bend as rubber with a stiff membrane, as a cord-rubber laminate does. The plies stay quasi-isotropic
 // in the plane (E_qi) and isotropic through it (the Mooney-Rivlin law), as in the smeared law.
+//
+// The belt (TyreSpec::belted): each +-theta steel-cord ply is a unidirectional cord-rubber layer (E_1, E_2 as for the
+// carcass plies, G_12 = G_rubber / (1 - V_f), nu_12 = V_f 0.3 + (1 - V_f) 0.5), rotated by classical lamination
+// theory; the balanced laminate's membrane stiffness A = t_belt Qbar (the +theta and -theta plies' shear couplings
+// cancel). Its one isotropic modulus E_belt is A11 / t_belt (the circumferential modulus with the lateral strain
+// held) or, belt_laterally_free, (A11 - A12^2 / A22) / t_belt. In the crown cells, the layer k = n_wall / 2 + 1 gets
+//   belt layer:  E = E_rubber + f E_belt t_belt / h_c,  h_c = h / n_wall
+// f the share of the cell's contour length inside the belt's half width (1 in the crown, a fraction at the belt's
+// edge: the belt's width is kept on coarse meshes), so the crown's circumferential membrane stiffness is
+// E_rubber h + E_qi t_plies + E_belt t_belt. The layer's modulus (~14 GPa) shortens the explicit step ~ 8 x.
 struct TyreLayers {
   std::vector<double> cell_scale;     // [n_theta n_section n_wall], cell id i0 + n_theta (i1 + n_section i2)
   double E_rubber = 0.0, E_cord_min = 0.0, E_cord_max = 0.0, scale_max = 0.0, scale_min = 0.0;
+  // the belt (belted only): the laminate's A11 / t, A22 / t, free E_x, the modulus used, the layer's largest E,
+  // the layer index through the wall and the contour cells it covers (f > 0)
+  double E_belt_held = 0.0, E_belt_across = 0.0, E_belt_free = 0.0, E_belt = 0.0, E_belt_layer_max = 0.0;
+  int belt_layer = -1, belt_cells = 0;
 };
+
+// The belt laminate's moduli (see TyreLayers): {A11 / t, A22 / t, (A11 - A12^2 / A22) / t}.
+inline std::array<double, 3> tyre_belt_moduli(const TyreSpec& s) {
+  const double Er = 6.0 * (s.C10 + s.C01), Vf = s.belt_fraction;
+  const double E1 = Vf * s.belt_modulus + (1.0 - Vf) * Er, E2 = Er / (1.0 - Vf), G12 = Er / 3.0 / (1.0 - Vf);
+  const double nu12 = Vf * 0.3 + (1.0 - Vf) * 0.5, nu21 = nu12 * E2 / E1, den = 1.0 - nu12 * nu21;
+  const double Q11 = E1 / den, Q22 = E2 / den, Q12 = nu12 * E2 / den, Q66 = G12;
+  const double th = s.belt_angle_deg * 3.14159265358979323846 / 180.0, c = std::cos(th), sn = std::sin(th);
+  const double c2 = c * c, s2 = sn * sn;
+  const double A11 = Q11 * c2 * c2 + 2.0 * (Q12 + 2.0 * Q66) * s2 * c2 + Q22 * s2 * s2;
+  const double A22 = Q11 * s2 * s2 + 2.0 * (Q12 + 2.0 * Q66) * s2 * c2 + Q22 * c2 * c2;
+  const double A12 = (Q11 + Q22 - 4.0 * Q66) * s2 * c2 + Q12 * (s2 * s2 + c2 * c2);
+  return {A11, A22, A11 - A12 * A12 / A22};
+}
 
 inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
   if (n_wall < 3 || n_wall % 2 == 0)
@@ -243,11 +291,39 @@ inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int
   }
   o.scale_min = o.E_rubber / eq.E_equivalent;
   o.scale_max = o.E_cord_max / eq.E_equivalent;
+  if (s.belted) {
+    if (!(s.belt_modulus > 0.0) || !(s.belt_fraction > 0.0 && s.belt_fraction < 1.0) || !(s.belt_ply_thickness > 0.0) ||
+        s.belt_plies < 1 || !(s.belt_half_width > 0.0) || !(s.belt_angle_deg >= 0.0 && s.belt_angle_deg < 90.0))
+      throw std::invalid_argument("solid::tyre_layers: the belt needs modulus > 0, 0 < fraction < 1, ply thickness > 0, plies >= 1, "
+                                  "half width > 0 and 0 <= angle < 90 deg");
+    const std::array<double, 3> A = tyre_belt_moduli(s);
+    o.E_belt_held = A[0];
+    o.E_belt_across = A[1];
+    o.E_belt_free = A[2];
+    o.E_belt = s.belt_laterally_free ? A[2] : A[0];
+    o.belt_layer = n_wall / 2 + 1;
+    const double t_belt = s.belt_plies * s.belt_ply_thickness, ds = 2.0 * c.half_length / n_section;
+    for (int j = 0; j < n_section; ++j) {
+      const double lo = (2.0 * j / n_section - 1.0) * c.half_length, hi = lo + ds;
+      const double f = std::fmax(0.0, std::fmin(hi, s.belt_half_width) - std::fmax(lo, -s.belt_half_width)) / ds;
+      if (!(f > 0.0)) continue;
+      const double sigma = 0.5 * (lo + hi);
+      double p[2], n[2], h = 0.0;
+      c.at(std::fabs(sigma), p, n, h);
+      const double E_layer = o.E_rubber + f * o.E_belt * t_belt / (h / n_wall);
+      o.E_belt_layer_max = std::fmax(o.E_belt_layer_max, E_layer);
+      ++o.belt_cells;
+      for (int i = 0; i < n_theta; ++i)
+        o.cell_scale[static_cast<std::size_t>(i + n_theta * (j + n_section * o.belt_layer))] = E_layer / eq.E_equivalent;
+    }
+    o.scale_max = std::fmax(o.scale_max, o.E_belt_layer_max / eq.E_equivalent);
+  }
   return o;
 }
 
 // The cell scales of the spec's wall: empty with the smeared law (the one-law path), tyre_layers' with layered.
 inline std::vector<double> tyre_cell_scale(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
+  if (s.belted && !s.layered) throw std::invalid_argument("solid::tyre_cell_scale: the belt (TyreSpec::belted) needs the layered wall");
   return s.layered ? tyre_layers(s, n_theta, n_section, n_wall).cell_scale : std::vector<double>{};
 }
 
