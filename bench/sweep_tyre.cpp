@@ -5,7 +5,9 @@
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_tyre [n_theta n_section n_wall order damping_inflate damping_plate
 //                                               plate_speed max_deflection out.csv wall]
 // wall: smeared (default, the one law), layered (TyreSpec::layered: rubber / cord layer / rubber through the
-// wall, n_wall odd >= 3) or belted (layered plus the steel belt layer over the crown, TyreSpec::belted).
+// wall, n_wall odd >= 3), belted (layered plus the steel belt layer over the crown, TyreSpec::belted: the +-20 deg
+// plies read as their circumferential modulus with the lateral strain held) or belted_free (the same belt read as
+// the free laminate's E_x, TyreSpec::belt_laterally_free).
 // Prints the set-up (DoFs, the critical step, the law), the inflation history and the plate's load-deflection
 // rows; writes them as CSV (phase,t,deflection,plate_force,rim_force_z,patch_length,patch_width,nodes_in_contact,
 // outer_radius,width,bead_axial).
@@ -73,16 +75,17 @@ int main(int argc, char** argv) {
   const double max_deflection = argc > 8 ? std::atof(argv[8]) : 0.04;
   const std::string path = argc > 9 ? argv[9] : "sweep_tyre.csv";
   const std::string wall = argc > 10 ? argv[10] : "smeared";
-  if (wall != "smeared" && wall != "layered" && wall != "belted") {
-    std::fprintf(stderr, "sweep_tyre: argument 10 (wall) is '%s'; allowed: smeared, layered, belted\n", wall.c_str());
+  if (wall != "smeared" && wall != "layered" && wall != "belted" && wall != "belted_free") {
+    std::fprintf(stderr, "sweep_tyre: argument 10 (wall) is '%s'; allowed: smeared, layered, belted, belted_free\n", wall.c_str());
     return 2;
   }
   const double p = 0.35e6, t_inflate = 0.010, t_hold = 0.010;
   polymech::kx::initialize();
   {
     so::TyreSpec spec{};
-    spec.layered = wall == "layered" || wall == "belted";
-    spec.belted = wall == "belted";
+    spec.belted = wall == "belted" || wall == "belted_free";
+    spec.belt_laterally_free = wall == "belted_free";
+    spec.layered = wall == "layered" || spec.belted;
     const so::TyreSection sec = so::tyre_section(spec);
     const so::TyreLaw law = so::tyre_equivalent_law(spec);
     std::printf("section: inner crown r %.4f, arcs R = %.4f %.4f %.4f m, angles %.3f %.3f %.3f rad, half contour %.4f m, "
@@ -113,10 +116,10 @@ int main(int argc, char** argv) {
                   "cells through the wall\n",
                   lay.E_rubber, lay.scale_min, lay.E_cord_min, lay.E_cord_max, lay.scale_max, n_wall);
       if (spec.belted)
-        std::printf("belt: %d plies x %.4g m at +-%.4g deg, steel %.4g Pa, V_f %.3g; laminate A11/t %.4g Pa (used%s), A22/t %.4g Pa, "
+        std::printf("belt: %d plies x %.4g m at +-%.4g deg, steel %.4g Pa, V_f %.3g; laminate A11/t %.4g Pa%s, A22/t %.4g Pa, "
                     "free E_x %.4g Pa%s; belt layer k = %d over %d contour cells (half width %.4g m), E up to %.4g Pa (scale %.4g)\n",
                     spec.belt_plies, spec.belt_ply_thickness, spec.belt_angle_deg, spec.belt_modulus, spec.belt_fraction, lay.E_belt_held,
-                    spec.belt_laterally_free ? " no" : "", lay.E_belt_across, lay.E_belt_free, spec.belt_laterally_free ? " (used)" : "",
+                    spec.belt_laterally_free ? "" : " (used)", lay.E_belt_across, lay.E_belt_free, spec.belt_laterally_free ? " (used)" : "",
                     lay.belt_layer, lay.belt_cells, spec.belt_half_width, lay.E_belt_layer_max, lay.E_belt_layer_max / law.E_equivalent);
     }
     double t0 = cpu_seconds();
