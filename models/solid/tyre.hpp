@@ -241,7 +241,7 @@ inline TyreLaw tyre_equivalent_law(const TyreSpec& s) {
 //   belt layer:  E = E_rubber + f E_belt t_belt / h_c,  h_c = h / n_wall
 // f the share of the cell's contour length inside the belt's half width (1 in the crown, a fraction at the belt's
 // edge: the belt's width is kept on coarse meshes), so the crown's circumferential membrane stiffness is
-// E_rubber h + E_qi t_plies + E_belt t_belt. The layer's modulus (~14 GPa) shortens the explicit step ~ 8 x.
+// E_rubber h + E_qi t_plies + E_belt t_belt. The layer's modulus (14 GPa) shortens the explicit step ~ 5 x (24 x 8 x 3).
 struct TyreLayers {
   std::vector<double> cell_scale;     // [n_theta n_section n_wall], cell id i0 + n_theta (i1 + n_section i2)
   double E_rubber = 0.0, E_cord_min = 0.0, E_cord_max = 0.0, scale_max = 0.0, scale_min = 0.0;
