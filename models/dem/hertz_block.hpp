@@ -132,23 +132,40 @@ void place_hertz_sphere(const SphereSet<T>& s, double z, double vz) {
       });
 }
 
+// The spec checked (std::invalid_argument naming `who` and what is allowed; the DEM contact's stiffness only with
+// `contact`) and the block's sizes: E* = E / (1 - nu^2), a_max = sqrt(R d_max), the block's width and depth W =
+// extent a_max, the first cell h0 = a_max / cells_per_contact.
+struct HertzGeometry {
+  double R = 0, E = 0, nu = 0, e_star = 0, a_max = 0, W = 0, h0 = 0;
+};
+
+inline HertzGeometry hertz_geometry(const HertzBlockSpec& spec, const std::string& who, bool contact) {
+  if (!(spec.radius > 0) || !(spec.young > 0) || !(spec.poisson > -1 && spec.poisson < 0.5) || !(spec.density > 0) ||
+      !(spec.depth_max > 0 && spec.depth_max < 0.2) || !(spec.cells_per_contact >= 1) || !(spec.ratio >= 1) ||
+      !(spec.extent >= 2) || (contact && !(spec.contact_stiffness > 0)) || !(spec.press_time > 0) || !(spec.damping >= 0) ||
+      !(spec.step_fraction > 0 && spec.step_fraction <= 1) || spec.rows < 1 || spec.order < 1 || spec.order > 4)
+    throw std::invalid_argument(who + ": need R, E, density > 0, nu in (-1, 0.5), depth_max in (0, 0.2), cells_per_contact >= 1, "
+                                "ratio >= 1, extent >= 2, " + (contact ? "contact_stiffness > 0, " : "") +
+                                "press_time > 0, damping >= 0, step_fraction in (0, 1], rows >= 1, order 1-4");
+  HertzGeometry g;
+  g.R = spec.radius;
+  g.E = spec.young;
+  g.nu = spec.poisson;
+  g.e_star = g.E / (1.0 - g.nu * g.nu);
+  g.a_max = std::sqrt(g.R * spec.depth_max * g.R);
+  g.W = spec.extent * g.a_max;
+  g.h0 = g.a_max / spec.cells_per_contact;
+  return g;
+}
+
 // The quasi-static press: spec.rows rows at equal times up to the travel d_max (1 + 1 / contact_stiffness).
 // Throws std::invalid_argument for a bad spec, std::runtime_error when the contact lists more facets than a row holds.
 inline HertzBlockResult hertz_block_press(const HertzBlockSpec& spec) {
   using T = double;
-  if (!(spec.radius > 0) || !(spec.young > 0) || !(spec.poisson > -1 && spec.poisson < 0.5) || !(spec.density > 0) ||
-      !(spec.depth_max > 0 && spec.depth_max < 0.2) || !(spec.cells_per_contact >= 1) || !(spec.ratio >= 1) ||
-      !(spec.extent >= 2) || !(spec.contact_stiffness > 0) || !(spec.press_time > 0) || !(spec.damping >= 0) ||
-      !(spec.step_fraction > 0 && spec.step_fraction <= 1) || spec.rows < 1 || spec.order < 1 || spec.order > 4)
-    throw std::invalid_argument("dem::hertz_block_press: need R, E, density > 0, nu in (-1, 0.5), depth_max in (0, 0.2), "
-                                "cells_per_contact >= 1, ratio >= 1, extent >= 2, contact_stiffness > 0, press_time > 0, "
-                                "damping >= 0, step_fraction in (0, 1], rows >= 1, order 1-4");
+  const HertzGeometry g = hertz_geometry(spec, "dem::hertz_block_press", true);
   const auto cpu0 = std::clock();
   HertzBlockResult out;
-  const double R = spec.radius, E = spec.young, nu = spec.poisson;
-  const double e_star = E / (1.0 - nu * nu);
-  const double a_max = std::sqrt(R * spec.depth_max * R), W = spec.extent * a_max;
-  const double h0 = a_max / spec.cells_per_contact;
+  const double R = g.R, E = g.E, nu = g.nu, e_star = g.e_star, a_max = g.a_max, W = g.W, h0 = g.h0;
   out.e_star = e_star;
   out.a_max = a_max;
   out.first_cell = h0;
@@ -320,19 +337,10 @@ inline HertzBlockResult hertz_block_press(const HertzBlockSpec& spec) {
 // largest rho of a node on or behind the plate, node_sum 0 (no DEM), overlap the plate's rise less d.
 inline HertzBlockResult hertz_plate_press(const HertzBlockSpec& spec) {
   using T = double;
-  if (!(spec.radius > 0) || !(spec.young > 0) || !(spec.poisson > -1 && spec.poisson < 0.5) || !(spec.density > 0) ||
-      !(spec.depth_max > 0 && spec.depth_max < 0.2) || !(spec.cells_per_contact >= 1) || !(spec.ratio >= 1) ||
-      !(spec.extent >= 2) || !(spec.press_time > 0) || !(spec.damping >= 0) || !(spec.step_fraction > 0 && spec.step_fraction <= 1) ||
-      spec.rows < 1 || spec.order < 1 || spec.order > 4)
-    throw std::invalid_argument("dem::hertz_plate_press: need R, E, density > 0, nu in (-1, 0.5), depth_max in (0, 0.2), "
-                                "cells_per_contact >= 1, ratio >= 1, extent >= 2, press_time > 0, damping >= 0, "
-                                "step_fraction in (0, 1], rows >= 1, order 1-4");
+  const HertzGeometry g = hertz_geometry(spec, "dem::hertz_plate_press", false);
   const auto cpu0 = std::clock();
   HertzBlockResult out;
-  const double R = spec.radius, E = spec.young, nu = spec.poisson;
-  const double e_star = E / (1.0 - nu * nu);
-  const double a_max = std::sqrt(R * spec.depth_max * R), W = spec.extent * a_max;
-  const double h0 = a_max / spec.cells_per_contact;
+  const double R = g.R, E = g.E, nu = g.nu, e_star = g.e_star, a_max = g.a_max, W = g.W, h0 = g.h0;
   out.e_star = e_star;
   out.a_max = a_max;
   out.first_cell = h0;
