@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   polymech::kx::initialize();
   int rc = 0;
   {
-    std::ofstream out(path);
+    std::ostringstream out;  // written to path at the end, only when every press ran (no half-written result)
     out << "res,cells_x,cells_z,dofs,steps,cpu_s,time,travel,depth,overlap,force,hertz,ratio,hertz_far,ratio_far,contact_radius,hertz_radius,node_sum,kinetic,contacts\n";
     for (const double r : res) {
       dm::HertzBlockSpec spec = base;
@@ -104,6 +104,10 @@ int main(int argc, char** argv) {
         rc = rc == 0 ? 1 : rc;
       }
     }
+    if (rc == 0)
+      std::ofstream(path) << out.str();
+    else
+      std::fprintf(stderr, "sweep_hertz: nothing written to %s\n", path.c_str());
   }
   Kokkos::finalize();
   return rc;
