@@ -158,6 +158,24 @@ inline HertzGeometry hertz_geometry(const HertzBlockSpec& spec, const std::strin
   return g;
 }
 
+// The elastic body of both presses: neo-Hookean with E, nu (Lame's mu, lambda), its shear wave speed, and the explicit
+// options (density, mass-proportional damping spec.damping x c_s / W).
+struct HertzBody {
+  materials::NeoHookean<double> law;
+  solid::ExplicitFiniteStrainOptions options;
+  double wave_speed = 0.0;
+};
+
+inline HertzBody hertz_body(const HertzBlockSpec& spec, const HertzGeometry& g) {
+  HertzBody b;
+  b.law.elastic.mu = g.E / (2.0 * (1.0 + g.nu));
+  b.law.elastic.lambda = g.E * g.nu / ((1.0 + g.nu) * (1.0 - 2.0 * g.nu));
+  b.wave_speed = std::sqrt(b.law.elastic.mu / spec.density);
+  b.options.density = spec.density;
+  b.options.damping = spec.damping * b.wave_speed / g.W;
+  return b;
+}
+
 // The quasi-static press: spec.rows rows at equal times up to the travel d_max (1 + 1 / contact_stiffness).
 // Throws std::invalid_argument for a bad spec, std::runtime_error when the contact lists more facets than a row holds.
 inline HertzBlockResult hertz_block_press(const HertzBlockSpec& spec) {
@@ -177,15 +195,10 @@ inline HertzBlockResult hertz_block_press(const HertzBlockSpec& spec) {
   c.order = spec.order;
   c.dirichlet = {{"xmin", 1u, {}}, {"ymin", 2u, {}}, {"zmin", 7u, {}}};
   for (int k = 0; k < 3; ++k) out.cells[static_cast<std::size_t>(k)] = c.mesh.cells[static_cast<std::size_t>(k)];
-  materials::NeoHookean<double> law;
-  law.elastic.mu = E / (2.0 * (1.0 + nu));
-  law.elastic.lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  const double cs = std::sqrt(law.elastic.mu / spec.density);
-  solid::ExplicitFiniteStrainOptions o;
-  o.density = spec.density;
-  o.damping = spec.damping * cs / W;
+  const HertzBody body = hertz_body(spec, g);
+  const double cs = body.wave_speed;
   using Solid = solid::HyperelasticExplicit<double, 3>;
-  Solid fe(c, solid::HyperelasticLaw(law), o);
+  Solid fe(c, solid::HyperelasticLaw(body.law), body.options);
   out.dofs = fe.dof_count();
 
   // the top face: one surface node per lattice point of zmax, quadrilaterals counter-clockwise seen from +z
@@ -361,14 +374,9 @@ inline HertzBlockResult hertz_plate_press(const HertzBlockSpec& spec) {
   c.affine_geometry = false;
   c.dirichlet = {{"xmin", 2u, {}}, {"ymin", 1u, {}}, {"zmin", 7u, {}}};
   for (int k = 0; k < 3; ++k) out.cells[static_cast<std::size_t>(k)] = c.mesh.cells[static_cast<std::size_t>(k)];
-  materials::NeoHookean<double> law;
-  law.elastic.mu = E / (2.0 * (1.0 + nu));
-  law.elastic.lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  const double cs = std::sqrt(law.elastic.mu / spec.density);
-  solid::ExplicitFiniteStrainOptions o;
-  o.density = spec.density;
-  o.damping = spec.damping * cs / W;
-  solid::HyperelasticExplicit<double, 3> fe(c, solid::HyperelasticLaw(law), o);
+  const HertzBody body = hertz_body(spec, g);
+  const double cs = body.wave_speed;
+  solid::HyperelasticExplicit<double, 3> fe(c, solid::HyperelasticLaw(body.law), body.options);
   out.dofs = fe.dof_count();
   const auto& d = fe.solid().discretization();
   const double dt = spec.step_fraction * fe.time_step();
