@@ -7,7 +7,8 @@
 // wall: smeared (default, the one law), layered (TyreSpec::layered: rubber / cord layer / rubber through the
 // wall, n_wall odd >= 3), belted (layered plus the steel belt layer over the crown, TyreSpec::belted: the +-20 deg
 // plies read as their circumferential modulus with the lateral strain held) or belted_free (the same belt read as
-// the free laminate's E_x, TyreSpec::belt_laterally_free).
+// the free laminate's E_x, TyreSpec::belt_laterally_free) or belted_rebar (the belt layer keeps the rubber and
+// carries the two +-20 deg steel-cord families as rebar, TyreSpec::belt_rebar: stiff round the wheel, soft across).
 // Prints the set-up (DoFs, the critical step, the law), the inflation history and the plate's load-deflection
 // rows; writes them as CSV (phase,t,deflection,plate_force,rim_force_z,patch_length,patch_width,nodes_in_contact,
 // outer_radius,width,bead_axial).
@@ -75,15 +76,17 @@ int main(int argc, char** argv) {
   const double max_deflection = argc > 8 ? std::atof(argv[8]) : 0.04;
   const std::string path = argc > 9 ? argv[9] : "sweep_tyre.csv";
   const std::string wall = argc > 10 ? argv[10] : "smeared";
-  if (wall != "smeared" && wall != "layered" && wall != "belted" && wall != "belted_free") {
-    std::fprintf(stderr, "sweep_tyre: argument 10 (wall) is '%s'; allowed: smeared, layered, belted, belted_free\n", wall.c_str());
+  if (wall != "smeared" && wall != "layered" && wall != "belted" && wall != "belted_free" && wall != "belted_rebar") {
+    std::fprintf(stderr, "sweep_tyre: argument 10 (wall) is '%s'; allowed: smeared, layered, belted, belted_free, belted_rebar\n",
+                 wall.c_str());
     return 2;
   }
   const double p = 0.35e6, t_inflate = 0.010, t_hold = 0.010;
   polymech::kx::initialize();
   {
     so::TyreSpec spec{};
-    spec.belted = wall == "belted" || wall == "belted_free";
+    spec.belted = wall == "belted" || wall == "belted_free" || wall == "belted_rebar";
+    spec.belt_rebar = wall == "belted_rebar";
     spec.belt_laterally_free = wall == "belted_free";
     spec.layered = wall == "layered" || spec.belted;
     const so::TyreSection sec = so::tyre_section(spec);
@@ -115,7 +118,18 @@ int main(int argc, char** argv) {
       std::printf("layered wall: rubber E %.4g Pa (scale %.4g), cord layer E %.4g..%.4g Pa (scale up to %.4g) in the middle of %d "
                   "cells through the wall\n",
                   lay.E_rubber, lay.scale_min, lay.E_cord_min, lay.E_cord_max, lay.scale_max, n_wall);
-      if (spec.belted)
+      if (spec.belt_rebar) {
+        eo.fibre_stiffness = lay.fibre_stiffness;
+        eo.fibre_angle_deg = spec.belt_angle_deg;
+        eo.fibre_tension_only = spec.belt_tension_only;
+        const double cb = std::cos(spec.belt_angle_deg * 3.14159265358979 / 180.0), sb = std::sin(spec.belt_angle_deg * 3.14159265358979 / 180.0);
+        std::printf("belt (rebar): %d plies x %.4g m at +-%.4g deg, steel %.4g Pa, V_f %.3g, as two cord families in the rubber of layer "
+                    "k = %d over %d contour cells (half width %.4g m): k per family up to %.4g Pa; small-strain layer stiffness "
+                    "round the wheel 2 k cos^4 = %.4g Pa, across 2 k sin^4 = %.4g Pa\n",
+                    spec.belt_plies, spec.belt_ply_thickness, spec.belt_angle_deg, spec.belt_modulus, spec.belt_fraction, lay.belt_layer,
+                    lay.belt_cells, spec.belt_half_width, lay.fibre_k_max, 2.0 * lay.fibre_k_max * cb * cb * cb * cb,
+                    2.0 * lay.fibre_k_max * sb * sb * sb * sb);
+      } else if (spec.belted)
         std::printf("belt: %d plies x %.4g m at +-%.4g deg, steel %.4g Pa, V_f %.3g; laminate A11/t %.4g Pa%s, A22/t %.4g Pa, "
                     "free E_x %.4g Pa%s; belt layer k = %d over %d contour cells (half width %.4g m), E up to %.4g Pa (scale %.4g)\n",
                     spec.belt_plies, spec.belt_ply_thickness, spec.belt_angle_deg, spec.belt_modulus, spec.belt_fraction, lay.E_belt_held,
@@ -160,6 +174,31 @@ int main(int argc, char** argv) {
                 "p pi (r_m^2 - r_b^2) = %.5g N (r_m = %.4f, the widest inner point; ratio %.4f); per unit bead length %.5g N/m\n",
                 static_cast<long long>(steps), cpu_inflate, steps / cpu_inflate, steps * double(m.solid().dof_count()) / cpu_inflate,
                 m.ties()[1].force[1], closed, rm, m.ties()[1].force[1] / closed, m.ties()[1].force[1] / (6.28318530718 * rb));
+    {  // the crown's transverse profile on the meridian theta = 0 (outer surface): how flat the tread is across
+      const std::vector<double> uh = polymech::models::to_host(m.displacement());
+      std::printf("inflated outer profile (theta = 0; y, r - r_crown, reference y, r - r_crown), |y| < 0.16 m:");
+      const auto outer = so::side_nodes(d, "zmax");
+      double rc = 0.0, rc0 = 0.0;
+      for (const auto n : outer) {
+        const auto I = d.lattice_index(n);
+        if (I[0] != 0 || I[1] != d.lattice[1] / 2) continue;
+        const std::size_t i = static_cast<std::size_t>(3 * n);
+        rc = std::sqrt((d.coordinates[i] + uh[i]) * (d.coordinates[i] + uh[i]) + (d.coordinates[i + 2] + uh[i + 2]) * (d.coordinates[i + 2] + uh[i + 2]));
+        rc0 = std::sqrt(d.coordinates[i] * d.coordinates[i] + d.coordinates[i + 2] * d.coordinates[i + 2]);
+      }
+      for (int j = 0; j < d.lattice[1]; ++j)
+        for (const auto n : outer) {
+          const auto I = d.lattice_index(n);
+          if (I[0] != 0 || I[1] != j) continue;
+          const std::size_t i = static_cast<std::size_t>(3 * n);
+          const double y = d.coordinates[i + 1] + uh[i + 1];
+          if (std::fabs(y) > 0.16) continue;
+          const double r = std::sqrt((d.coordinates[i] + uh[i]) * (d.coordinates[i] + uh[i]) + (d.coordinates[i + 2] + uh[i + 2]) * (d.coordinates[i + 2] + uh[i + 2]));
+          const double r0 = std::sqrt(d.coordinates[i] * d.coordinates[i] + d.coordinates[i + 2] * d.coordinates[i + 2]);
+          std::printf(" (%.4f, %.5f; %.4f, %.5f)", y, r - rc, d.coordinates[i + 1], r0 - rc0);
+        }
+      std::printf("\n");
+    }
     const double dt_inflated = m.estimate_critical_step();
     std::printf("critical step inflated %.4g s (omega_max %.4g)\n", dt_inflated, m.omega_max());
     // plate: from the inflated lowest point up at plate_speed

@@ -101,6 +101,18 @@ struct FiniteStrainElementData {
   // a layered body (the tyre's cord layer, issue 37) with one law evaluation per point. Applied to the
   // quadrature weight (w_q det J -> s_e w_q det J), so s_e = 1 gives the one-law result bitwise.
   View1<T> scale;
+  // Rebar: two cord families per element (seed 002 paper 2 §4, the belt reinforcements; issue 37: the tyre's steel
+  // belt; empty: none, nothing stored or evaluated). Per element (storage order) {k, cos beta, sin beta}: the unit
+  // reference directions a_+- = cos beta t_0 +- sin beta t_1 in the element's local tangent plane at each point (t_0
+  // the unit reference tangent along the element's direction 0, t_1 that along direction 1 made orthogonal to t_0:
+  // on a mapped lattice the lattice's tangents, the tyre's circumferential and lateral directions), each family a
+  // fibre with S_f = k E_a a (x) a, E_a = a.E.a = (a.C.a - 1) / 2 (1D Hooke in the Green strain along the cord,
+  // W_f = k E_a^2 / 2; k the smeared modulus of the family's cords per element volume: the small-strain stiffness
+  // along the cord). Added to the law's P and A (P_f = F S_f, A_f = d_ik S_f,JL + k (F a)_i a_J (F a)_k a_L) with
+  // the unscaled weight w_q det J (the per-element scale is the matrix law's). fibre_tension_only: S_f = 0 where
+  // E_a < 0 (cords do not carry compression). An element with k = 0 is skipped.
+  Kokkos::View<T* [3], Kokkos::LayoutRight, MemSpace> fibre;
+  bool fibre_tension_only = false;
 };
 
 struct FiniteStrainEvaluation {
@@ -109,6 +121,65 @@ struct FiniteStrainEvaluation {
 };
 
 namespace detail {
+
+// The two cord families of FiniteStrainElementData::fibre at one point (3D): w0 = w_q det J; adds to the energy,
+// the element force and, with Tangent, the element matrix (seed 002 paper 2 §4, the belt reinforcements).
+template <class T, int D, int ND, bool Tangent, class Km_t>
+KOKKOS_INLINE_FUNCTION void add_fibres(const Mat3<T>& F, const T (&Ji)[D][D], const T (&G)[ND][D], const T k, const T cb,
+                                       const T sb, const bool tension_only, const T w0, double& we, T (&fe)[ND][D], const Km_t& Km,
+                                       const Index e) {
+  if constexpr (D == 3) {
+    // the reference tangents t_0, t_1: columns 0 and 1 of J = (J^-1)^-1
+    Mat3<T> Jinv;
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < 3; ++j) Jinv.a[r][j] = Ji[r][j];
+    const Mat3<T> Jr = inverse(Jinv);  // Jr.a[c][d] = dX_c / dxi_d
+    T t0[3], t1[3];
+    T n0 = T(0);
+    for (int c = 0; c < 3; ++c) n0 += Jr.a[c][0] * Jr.a[c][0];
+    n0 = T(1) / kx::sqrt(n0);
+    for (int c = 0; c < 3; ++c) t0[c] = Jr.a[c][0] * n0;
+    T p = T(0);
+    for (int c = 0; c < 3; ++c) p += Jr.a[c][1] * t0[c];
+    T n1 = T(0);
+    for (int c = 0; c < 3; ++c) {
+      t1[c] = Jr.a[c][1] - p * t0[c];
+      n1 += t1[c] * t1[c];
+    }
+    n1 = T(1) / kx::sqrt(n1);
+    for (int c = 0; c < 3; ++c) t1[c] *= n1;
+    constexpr int M = D * ND;
+    for (int fam = 0; fam < 2; ++fam) {
+      const T sg = fam == 0 ? T(1) : T(-1);
+      T a[3], Fa[3];
+      for (int c = 0; c < 3; ++c) a[c] = cb * t0[c] + sg * sb * t1[c];
+      T I4 = T(0);
+      for (int c = 0; c < 3; ++c) {
+        Fa[c] = F.a[c][0] * a[0] + F.a[c][1] * a[1] + F.a[c][2] * a[2];
+        I4 += Fa[c] * Fa[c];
+      }
+      const T Ea = T(0.5) * (I4 - T(1));
+      if (tension_only && !(Ea > T(0))) continue;
+      const T sf = k * Ea;  // S_f = sf a (x) a
+      we += static_cast<double>(w0 * T(0.5) * k * Ea * Ea);
+      T Ga[ND];  // Grad N_a . a
+      for (int aa = 0; aa < ND; ++aa) Ga[aa] = G[aa][0] * a[0] + G[aa][1] * a[1] + G[aa][2] * a[2];
+      // P_f G_a = sf (F a) (a . G_a)
+      for (int aa = 0; aa < ND; ++aa)
+        for (int c = 0; c < 3; ++c) fe[aa][c] += w0 * sf * Fa[c] * Ga[aa];
+      if constexpr (Tangent) {
+        // K[(a, c), (b, d)] += w0 (d_cd sf Ga_a Ga_b + k Fa_c Ga_a Fa_d Ga_b)
+        for (int aa = 0; aa < ND; ++aa)
+          for (int c = 0; c < 3; ++c)
+            for (int bb = 0; bb < ND; ++bb)
+              for (int d = 0; d < 3; ++d) {
+                const T v = (c == d ? sf : T(0)) * Ga[aa] * Ga[bb] + k * Fa[c] * Ga[aa] * Fa[d] * Ga[bb];
+                Km(e, (aa * 3 + c) * M + bb * 3 + d) += static_cast<double>(w0 * v);
+              }
+      }
+    }
+  }
+}
 
 template <class T, int D, int N, bool Tangent, class Law>
 void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const View1<T>& u, const View1<T>& f,
@@ -122,12 +193,16 @@ void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const
   const auto Km = out.matrices;
   const auto scale = out.scale;
   const bool scaled = scale.extent(0) > 0;
+  const auto fibre = out.fibre;
+  const bool fibred = D == 3 && fibre.extent(0) > 0;
+  const bool tension_only = out.fibre_tension_only;
   fem::parallel_for_batches(
       "polymech::solid::finite_strain_elements", el.cells, KOKKOS_LAMBDA(const Index e0, const int count, int) {
         const Index row = geo.slot(e0);
         for (int l = 0; l < count; ++l) {
           const Index e = e0 + l;
           const T se = scaled ? scale(e) : T(1);
+          const T kf = fibred ? fibre(e, 0) : T(0);
           T ue[ND][D], fe[ND][D], G[ND][D];
           for (int a = 0; a < ND; ++a)
             for (int c = 0; c < D; ++c) {
@@ -140,7 +215,8 @@ void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const
           int bad = 0;
           for (int q = 0; q < QD && !bad; ++q) {
             T Ji[D][D];
-            const T wd = se * geo.template at<Q>(row, e0, l, q, b.w, Ji);  // s_e w_q det J
+            const T w0 = geo.template at<Q>(row, e0, l, q, b.w, Ji);  // w_q det J
+            const T wd = se * w0;                                      // s_e w_q det J
             const int qi[3] = {q % Q, (q / Q) % Q, q / (Q * Q)};
             for (int a = 0; a < ND; ++a) {
               const int ai[3] = {a % N, (a / N) % N, a / (N * N)};
@@ -181,6 +257,7 @@ void finite_strain_elements(const SolidElements<T, D>& el, const Law& law, const
                 for (int j = 0; j < D; ++j) s += P.a[c][j] * G[a][j];
                 fe[a][c] += wd * s;
               }
+            if (kf != T(0)) detail::add_fibres<T, D, ND, Tangent>(F, Ji, G, kf, fibre(e, 1), fibre(e, 2), tension_only, w0, we, fe, Km, e);
             if (Tangent) {
               const materials::PiolaTangent<T> A = piola_tangent(law, F);
               for (int a = 0; a < ND; ++a)

@@ -131,6 +131,41 @@ class Hyperelastic : public NewtonSolid<T, D, Hyperelastic<T, D>> {
   // The largest per-cell scale (1 with one law).
   double cell_scale_max() const { return scale_max_; }
 
+  // Rebar (issue 37: the tyre's steel belt; seed 002 paper 2 §4, the belt reinforcements): two cord families per
+  // cell at +-beta (beta_deg) to the element's direction 0 in its (0, 1) tangent plane, each with the fibre law of
+  // kernels/solid/finite_strain.hpp (S_f = k E_a a (x) a), k = k[c] the family's smeared modulus in cell c (0: no
+  // cords there), added to the matrix law (its cell scale applies to the matrix only). 3D only. An empty vector
+  // removes them (nothing stored, the kernel's path without fibres).
+  void set_fibres(const std::vector<double>& k, double beta_deg, bool tension_only = false) {
+    if (k.empty()) {
+      elements_.fibre = decltype(elements_.fibre)();
+      return;
+    }
+    if (D != 3) throw std::invalid_argument("solid::Hyperelastic::set_fibres: cord families are for 3D solids");
+    if (!(beta_deg >= 0.0 && beta_deg <= 90.0)) throw std::invalid_argument("solid::Hyperelastic::set_fibres: beta must be in [0, 90] deg");
+    const auto& cells = this->discretization().element_cells;
+    const double b = beta_deg * 3.14159265358979323846 / 180.0;
+    decltype(elements_.fibre) dev("polymech::solid::fs_fibre", cells.size());
+    auto h = Kokkos::create_mirror_view(dev);
+    for (std::size_t e = 0; e < cells.size(); ++e) {
+      const std::int64_t c = cells[e];
+      if (c < 0 || static_cast<std::size_t>(c) >= k.size())
+        throw std::invalid_argument("solid::Hyperelastic::set_fibres: " + std::to_string(k.size()) + " stiffnesses for a mesh with cell " +
+                                    std::to_string(c));
+      const double v = k[static_cast<std::size_t>(c)];
+      if (!(v >= 0.0) || !std::isfinite(v))
+        throw std::invalid_argument("solid::Hyperelastic::set_fibres: cell " + std::to_string(c) + " has cord stiffness " +
+                                    std::to_string(v) + " (must be finite and >= 0)");
+      h(e, 0) = static_cast<T>(v);
+      h(e, 1) = static_cast<T>(std::cos(b));
+      h(e, 2) = static_cast<T>(std::sin(b));
+    }
+    Kokkos::deep_copy(dev, h);
+    elements_.fibre = dev;
+    elements_.fibre_tension_only = tension_only;
+  }
+  bool has_fibres() const { return elements_.fibre.extent(0) > 0; }
+
   const PressureFaces<D>& pressure_faces() const { return pressure_; }
   // Strain energy of the last evaluation.
   double strain_energy() const { return energy_; }

@@ -44,6 +44,12 @@ struct ExplicitFiniteStrainOptions {
   // The critical step's power iteration runs on the scaled residual, so a stiffer layer shortens dt_crit as
   // 1/sqrt(s) where it sets the highest mode.
   std::vector<double> cell_scale;
+  // Rebar cord families per cell (Hyperelastic::set_fibres; issue 37: the tyre's steel belt, TyreSpec::belt_rebar):
+  // the family's smeared modulus k per cell (empty: none), the angle +-fibre_angle_deg to the element's direction 0,
+  // tension-only cords. The power iteration runs on the residual with the cords, so dt_crit sees their stiffness.
+  std::vector<double> fibre_stiffness;
+  double fibre_angle_deg = 0.0;
+  bool fibre_tension_only = false;
 };
 
 template <class T, int D>
@@ -61,6 +67,7 @@ class HyperelasticExplicit {
     if (!(o.safety > 0.0 && o.safety <= 1.0)) throw std::invalid_argument("solid::HyperelasticExplicit: safety must be in (0, 1]");
     if (o.dt < 0.0 || !std::isfinite(o.dt)) throw std::invalid_argument("solid::HyperelasticExplicit: dt must be >= 0 (0: automatic)");
     if (!o.cell_scale.empty()) solid_.set_cell_scale(o.cell_scale);
+    if (!o.fibre_stiffness.empty()) solid_.set_fibres(o.fibre_stiffness, o.fibre_angle_deg, o.fibre_tension_only);
     const Index n = solid_.dof_count();
     u_ = View1<T>("polymech::solid::fse_u", n);
     v_ = View1<T>("polymech::solid::fse_v", n);

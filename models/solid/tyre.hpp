@@ -30,7 +30,10 @@
 // stiffness (the cords sit at mid-surface) and underestimates the steel belt's circumferential stiffness.
 // With TyreSpec::layered the wall is layered instead (tyre_layers: the same law scaled per cell, the plies in
 // the middle cell through the wall), which keeps the membrane stiffness and drops the plies' bending share.
-// TyreSpec::belted adds a steel belt layer over the crown (tyre_layers: the layer outside the cord layer).
+// TyreSpec::belted adds a steel belt layer over the crown (tyre_layers: the layer outside the cord layer), read as
+// one isotropic modulus, or with TyreSpec::belt_rebar as rebar: the layer keeps the rubber and carries two steel-cord
+// families at +-belt_angle_deg to the circumference (tyre_fibre_stiffness; Hyperelastic::set_fibres; seed 002
+// paper 2 §4, the belt reinforcements).
 //
 // Plate (PlateContact): a rigid plane z = z_p(t) below the tyre, normal +z, frictionless; each outer-surface node
 // below it gets f_z = k_i g + c_i (v_p - v_z) >= 0 (g = z_p - z_i the penetration), k_i = beta m_i omega_max^2 (a
@@ -88,6 +91,14 @@ struct TyreSpec {
   // across the crown as round it (a real +-20 deg belt is ~ 56 x softer across, A22 / t = 0.69 GPa); true, the
   // free laminate's E_x = (A11 - A12^2 / A22) / t (lateral stress zero: the plies scissor; 0.42 GPa).
   bool belt_laterally_free = false;
+  // The third reading (issue 37; seed 002 paper 2 §4, the belt reinforcements): rebar. With belt_rebar the belt
+  // layer's cells keep the rubber's law (the layered wall's scale) and carry two steel-cord families at
+  // +-belt_angle_deg to the circumferential direction in the cell's tangent plane (Hyperelastic::set_fibres: each a
+  // fibre stress along its cord, S_f = k E_a a (x) a), so the layer is stiff round the wheel (2 k cos^4 beta), soft
+  // across (2 k sin^4 beta, 57 x less at 20 deg) and scissors as crossed plies do (held by the rubber and the
+  // carcass layer below). belt_laterally_free is ignored. belt_tension_only: cords carry no compression.
+  bool belt_rebar = false;
+  bool belt_tension_only = false;
 };
 
 // The inner contour's half (the y > 0 side) from the centre line: three arcs (radius, turning angle).
@@ -242,6 +253,12 @@ inline TyreLaw tyre_equivalent_law(const TyreSpec& s) {
 // f the share of the cell's contour length inside the belt's half width (1 in the crown, a fraction at the belt's
 // edge: the belt's width is kept on coarse meshes), so the crown's circumferential membrane stiffness is
 // E_rubber h + E_qi t_plies + E_belt t_belt. The layer's modulus (14 GPa) shortens the explicit step ~ 5 x (24 x 8 x 3).
+// With belt_rebar the layer's scale stays the rubber's and fibre_stiffness holds each cord family's smeared modulus
+// k = f E_cord V_f (t_belt / 2) / h_c in the same cells (seed 002 paper 2 §4, the belt reinforcements; the fibre law
+// of kernels/solid/finite_strain.hpp): the layer's small-strain cord stiffness is 2 k cos^4 beta round the wheel
+// (14.0 GPa, the A11 reading's), 2 k sin^4 beta across (0.25 GPa) and 2 k cos^2 beta sin^2 beta in shear, and the
+// cords act along the cell's plane only, so they leave the explicit step at the layered wall's (the cord layer's
+// through-thickness mode stays the highest; the power iteration runs with the cords).
 struct TyreLayers {
   std::vector<double> cell_scale;     // [n_theta n_section n_wall], cell id i0 + n_theta (i1 + n_section i2)
   double E_rubber = 0.0, E_cord_min = 0.0, E_cord_max = 0.0, scale_max = 0.0, scale_min = 0.0;
@@ -249,6 +266,10 @@ struct TyreLayers {
   // the layer index through the wall and the contour cells it covers (f > 0)
   double E_belt_held = 0.0, E_belt_across = 0.0, E_belt_free = 0.0, E_belt = 0.0, E_belt_layer_max = 0.0;
   int belt_layer = -1, belt_cells = 0;
+  // the rebar belt (belt_rebar only; else empty): per cell (the cell_scale's order) the smeared modulus k of each of
+  // the two cord families (0 outside the belt), and its largest value
+  std::vector<double> fibre_stiffness;
+  double fibre_k_max = 0.0;
 };
 
 // The belt laminate's moduli (see TyreLayers): {A11 / t, A22 / t, (A11 - A12^2 / A22) / t}.
@@ -303,6 +324,7 @@ inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int
     o.E_belt = s.belt_laterally_free ? A[2] : A[0];
     o.belt_layer = n_wall / 2 + 1;
     const double t_belt = s.belt_plies * s.belt_ply_thickness, ds = 2.0 * c.half_length / n_section;
+    if (s.belt_rebar) o.fibre_stiffness.assign(o.cell_scale.size(), 0.0);
     for (int j = 0; j < n_section; ++j) {
       const double lo = (2.0 * j / n_section - 1.0) * c.half_length, hi = lo + ds;
       const double f = std::fmax(0.0, std::fmin(hi, s.belt_half_width) - std::fmax(lo, -s.belt_half_width)) / ds;
@@ -310,9 +332,20 @@ inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int
       const double sigma = 0.5 * (lo + hi);
       double p[2], n[2], h = 0.0;
       c.at(std::fabs(sigma), p, n, h);
+      ++o.belt_cells;
+      if (s.belt_rebar) {
+        // Rebar (seed 002 paper 2 §4, the belt reinforcements): the plies split evenly over the +-beta families; a
+        // family's cords, V_f of t_belt / 2, smeared over the cell layer h_c = h / n_wall: k = f E_cord V_f
+        // (t_belt / 2) / h_c (the cords' share only: the rubber between them is the layer's own Mooney-Rivlin law,
+        // kept; f the covered share of the cell's contour length, as for the isotropic layer). 9.0 GPa per family in
+        // a crown cell of 24 x 8 x 3: round the wheel 2 k cos^4(20 deg) = 14.0 GPa, as the A11 reading's layer.
+        const double k = f * s.belt_modulus * s.belt_fraction * (0.5 * t_belt) / (h / n_wall);
+        o.fibre_k_max = std::fmax(o.fibre_k_max, k);
+        for (int i = 0; i < n_theta; ++i) o.fibre_stiffness[static_cast<std::size_t>(i + n_theta * (j + n_section * o.belt_layer))] = k;
+        continue;
+      }
       const double E_layer = o.E_rubber + f * o.E_belt * t_belt / (h / n_wall);
       o.E_belt_layer_max = std::fmax(o.E_belt_layer_max, E_layer);
-      ++o.belt_cells;
       for (int i = 0; i < n_theta; ++i)
         o.cell_scale[static_cast<std::size_t>(i + n_theta * (j + n_section * o.belt_layer))] = E_layer / eq.E_equivalent;
     }
@@ -325,6 +358,15 @@ inline TyreLayers tyre_layers(const TyreSpec& s, int n_theta, int n_section, int
 inline std::vector<double> tyre_cell_scale(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
   if (s.belted && !s.layered) throw std::invalid_argument("solid::tyre_cell_scale: the belt (TyreSpec::belted) needs the layered wall");
   return s.layered ? tyre_layers(s, n_theta, n_section, n_wall).cell_scale : std::vector<double>{};
+}
+
+// The rebar belt's per-cell cord stiffness (TyreSpec::belt_rebar; ExplicitFiniteStrainOptions::fibre_stiffness,
+// with fibre_angle_deg = belt_angle_deg): empty without it. make_tyre's element direction 0 is round the wheel and
+// direction 1 along the contour, so the kernel's t_0, t_1 are the circumferential and lateral tangents.
+inline std::vector<double> tyre_fibre_stiffness(const TyreSpec& s, int n_theta, int n_section, int n_wall) {
+  if (!s.belt_rebar) return {};
+  if (!s.belted || !s.layered) throw std::invalid_argument("solid::tyre_fibre_stiffness: the rebar belt (TyreSpec::belt_rebar) needs belted and layered");
+  return tyre_layers(s, n_theta, n_section, n_wall).fibre_stiffness;
 }
 
 // The widest point of the (deformed) inner surface on the y > 0 side, on the meridian theta = 0: (y, r) at the
