@@ -14,6 +14,7 @@
 // rho N_b du_i/dx_j (the Oseen linearisation).
 #pragma once
 
+#include "core/kokkos_shim.hpp"
 #include "core/types.hpp"
 
 namespace polymech::flow {
@@ -37,6 +38,7 @@ struct ElementInput {
   View2<double> wdet;                                                              // (e, q)
   View2<std::int64_t> dofs;                                                        // (e, 22)
   View2<double> force;                                                             // (e, 2 q + i) or empty
+  View2<double> eddy;  // (e, q) the eddy viscosity nu_t [m^2/s] (FlowConfig::smagorinsky) or empty: none
 };
 
 struct ElementCoefficients {
@@ -52,9 +54,11 @@ inline void element_residual_jacobian(const ElementInput& in, const ElementBasis
   const auto wdet = in.wdet;
   const auto dofs = in.dofs;
   const auto force = in.force;
+  const auto eddy = in.eddy;
   const bool has_force = force.extent(0) > 0;
+  const bool has_eddy = eddy.extent(0) > 0;
   const bool has_mesh_velocity = W.extent(0) > 0;
-  const double rho = co.rho, mu = co.mu, ct = co.ct;
+  const double rho = co.rho, mu0 = co.mu, ct = co.ct;
   const ElementBasis B = basis;
   const std::int64_t ne = static_cast<std::int64_t>(dofs.extent(0));
   Kokkos::parallel_for(
@@ -77,6 +81,7 @@ inline void element_residual_jacobian(const ElementInput& in, const ElementBasis
         }
         for (int q = 0; q < kPoints; ++q) {
           const double wd = wdet(e, q);
+          const double mu = has_eddy ? mu0 + rho * eddy(e, q) : mu0;  // the eddy viscosity is data of the step
           double g[kVelocityNodes][2];
           double uq[2] = {0, 0}, usq[2] = {0, 0}, wq[2] = {0, 0}, gu[2][2] = {{0, 0}, {0, 0}}, pq = 0.0;
           for (int a = 0; a < kVelocityNodes; ++a) {
@@ -138,6 +143,34 @@ inline void element_residual_jacobian(const ElementInput& in, const ElementBasis
           Re(e, k) = R[k];
           if (jacobian)
             for (int l = 0; l < kElementDofs; ++l) Ke(e, k * kElementDofs + l) = K[k][l];
+        }
+      });
+}
+
+// The Smagorinsky eddy viscosity at the Gauss points, nu_t = (C_s Delta)^2 |S|, |S| = sqrt(2 S:S), S the strain
+// rate of the velocity V (the step's extrapolation 2 u^n - u^(n-1), models/flow/navier_stokes_solve.hpp), Delta
+// = sqrt(|element|) / 2 (the Q2 node spacing). Into in.eddy (e, q).
+inline void smagorinsky_viscosity(const ElementInput& in, const View1<double>& V, double cs) {
+  const auto grad = in.grad;
+  const auto wdet = in.wdet;
+  const auto dofs = in.dofs;
+  const auto eddy = in.eddy;
+  const std::int64_t ne = static_cast<std::int64_t>(dofs.extent(0));
+  Kokkos::parallel_for(
+      "polymech::flow::smagorinsky_viscosity", range(ne), KOKKOS_LAMBDA(const std::int64_t e) {
+        double area = 0.0;
+        for (int q = 0; q < kPoints; ++q) area += wdet(e, q);
+        const double delta = 0.5 * kx::sqrt(area), l2 = cs * cs * delta * delta;
+        for (int q = 0; q < kPoints; ++q) {
+          double gu[2][2] = {{0, 0}, {0, 0}};
+          for (int a = 0; a < kVelocityNodes; ++a)
+            for (int i = 0; i < 2; ++i) {
+              const double ua = V(dofs(e, 2 * a + i));
+              gu[i][0] += ua * grad(e, q, a, 0);
+              gu[i][1] += ua * grad(e, q, a, 1);
+            }
+          const double s01 = 0.5 * (gu[0][1] + gu[1][0]);
+          eddy(e, q) = l2 * kx::sqrt(2.0 * (gu[0][0] * gu[0][0] + gu[1][1] * gu[1][1] + 2.0 * s01 * s01));
         }
       });
 }

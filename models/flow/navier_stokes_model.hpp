@@ -39,6 +39,11 @@ struct FlowConfig {
   // time steps: keep the first iteration's factorisation for the step's later iterations (the chord method),
   // refactorising only when an update shrinks by less than 3x; the converged state is the same
   bool chord = false;
+  // C_s of a Smagorinsky eddy viscosity nu_t = (C_s Delta)^2 |S| added to nu in time steps (0: none, the model
+  // as before). |S| from the step's extrapolated velocity (2 u^n - u^(n-1); u^n after a start), so nu_t is data
+  // of the step and Newton's Jacobian stays exact; a stabiliser for meshes too coarse for the Reynolds number
+  // (the flow-driven harvester, Re ~ 1700: models/fsi/flow_harvester.hpp), not a turbulence model of 2D flow.
+  double smagorinsky = 0.0;
 };
 
 struct NewtonReport {
@@ -66,6 +71,7 @@ class NavierStokes2D {
  public:
   NavierStokes2D(QuadMesh mesh, FlowConfig config) : mesh_(std::move(mesh)), cfg_(std::move(config)) {
     if (!(cfg_.rho > 0) || !(cfg_.nu > 0)) throw std::invalid_argument("flow: density and viscosity must be positive");
+    if (!(cfg_.smagorinsky >= 0.0) || !std::isfinite(cfg_.smagorinsky)) throw std::invalid_argument("flow: the Smagorinsky constant must be >= 0 and finite");
     if (mesh_.element_count() < 1) throw std::invalid_argument("flow: the mesh has no elements");
     if (mesh_.tags.size() != static_cast<std::size_t>(mesh_.node_count()))
       throw std::invalid_argument("flow: the mesh has " + std::to_string(mesh_.tags.size()) + " node tags for " +

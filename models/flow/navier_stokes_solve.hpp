@@ -36,6 +36,15 @@ inline NewtonReport NavierStokes2D::step(double dt) {
   if (bdf2)
     for (std::size_t k = 0; k < u_host_.size(); ++k)
       if (free_[k] >= 0) u_host_[k] = 2.0 * u_prev_[k] - u_prev2_[k];
+  if (cfg_.smagorinsky > 0.0) {  // the step's eddy viscosity from the extrapolated velocity (FlowConfig::smagorinsky)
+    if (in_.eddy.extent(0) != static_cast<std::size_t>(ne_)) in_.eddy = View2<double>("polymech::flow::eddy_viscosity", static_cast<std::size_t>(ne_), kPoints);
+    std::vector<double> v = u_host_;
+    if (bdf2)
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] = 2.0 * u_prev_[k] - u_prev2_[k];
+    copy_to(U_, v);
+    smagorinsky_viscosity(in_, U_, cfg_.smagorinsky);
+    Kokkos::fence();
+  }
   const NewtonReport r = newton(ct, true);
   last_dt_ = dt;
   ++steps_;

@@ -60,6 +60,7 @@ struct TransientState {
   double time = 0.0, base_acceleration = 0.0;
   std::vector<double> x, v, a, Q;  // unknowns, their rates (displacements only), electrode charges
   std::vector<double> jacobian;     // the partitioned loop's Broyden Jacobian (empty before its first step)
+  std::vector<double> f_ext;        // the external nodal load of the last step (empty: none so far; fsi/flow_harvester.hpp)
   double work_in = 0.0, work_damping = 0.0, work_circuit = 0.0, energy0 = 0.0;
 };
 
@@ -120,9 +121,12 @@ class PiezoTransient {
     s_.energy0 = energy();
   }
 
-  // One step to t + dt with the base acceleration a_b(t + dt). Returns the partitioned scheme's iterations (1
-  // for the monolithic one). Throws if the partitioned loop does not converge.
-  int step(double ab_next) {
+  // One step to t + dt with the base acceleration a_b(t + dt) and, optionally, external nodal loads F_ext(t + dt)
+  // on the unknowns (the fluid's forces on the wet nodes, models/fsi/flow_harvester.hpp: entries on displacement
+  // unknowns only; their work enters the energy balance with the trapezoidal average of the step's two loads).
+  // Returns the partitioned scheme's iterations (1 for the monolithic one). Throws if the partitioned loop does
+  // not converge.
+  int step(double ab_next, const std::vector<double>* f_ext = nullptr) {
     const std::size_t n = s_.x.size();
     const double dt = o_.dt;
     const int ne = beam_.electrodes();
@@ -138,10 +142,14 @@ class PiezoTransient {
     std::vector<double> Md, Kd;
     if (o_.damping.alpha != 0.0) beam_.M().apply(d, Md);
     if (o_.damping.beta != 0.0) beam_.Kuu().apply(d, Kd);
+    if (f_ext && f_ext->size() != n)
+      throw std::invalid_argument("piezo transient: the external load has " + std::to_string(f_ext->size()) + " entries, the beam " +
+                                  std::to_string(n) + " unknowns");
     for (std::size_t i = 0; i < static_cast<std::size_t>(beam_.displacement_unknowns()); ++i) {
       b[i] = Mw[i];
       if (o_.damping.alpha != 0.0) b[i] += o_.damping.alpha * Md[i];
       if (o_.damping.beta != 0.0) b[i] += o_.damping.beta * Kd[i];
+      if (f_ext) b[i] += (*f_ext)[i];
     }
     const std::vector<double> Vn = beam_.electrode_potentials(s_.x);
     for (int k = 0; k < ne; ++k) {
@@ -181,6 +189,14 @@ class PiezoTransient {
     beam_.M().apply(rm, Mr);
     const double Favg = -0.5 * (s_.base_acceleration + ab_next);
     s_.work_in += Favg * std::inner_product(du.begin(), du.end(), Mr.begin(), 0.0);
+    if (f_ext || !s_.f_ext.empty()) {  // the external loads' work, du . (F_n + F_n+1) / 2
+      double w_ext = 0.0;
+      for (std::size_t i = 0; i < static_cast<std::size_t>(beam_.displacement_unknowns()); ++i)
+        w_ext += du[i] * 0.5 * ((s_.f_ext.empty() ? 0.0 : s_.f_ext[i]) + (f_ext ? (*f_ext)[i] : 0.0));
+      s_.work_in += w_ext;
+      if (f_ext) s_.f_ext = *f_ext;
+      else s_.f_ext.clear();
+    }
     double vCv = 0.0;
     if (o_.damping.alpha != 0.0) vCv += o_.damping.alpha * beam_.M().dot(vavg, vavg);
     if (o_.damping.beta != 0.0) vCv += o_.damping.beta * beam_.Kuu().dot(vavg, vavg);
@@ -214,7 +230,7 @@ class PiezoTransient {
   void restore(const TransientState& s) {
     const std::size_t m = s_.Q.size();
     if (s.x.size() != s_.x.size() || s.v.size() != s_.v.size() || s.a.size() != s_.a.size() || s.Q.size() != m ||
-        (!s.jacobian.empty() && s.jacobian.size() != m * m))
+        (!s.jacobian.empty() && s.jacobian.size() != m * m) || (!s.f_ext.empty() && s.f_ext.size() != s_.x.size()))
       throw std::invalid_argument("piezo transient: the restart state does not fit this model");
     s_ = s;
   }
