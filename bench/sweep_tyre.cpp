@@ -3,12 +3,14 @@
 // damping), the inflated shape and the rim's reaction against the membrane closed form; then a rigid plate
 // raised against the tyre at a constant speed (the rim held): load against deflection and the contact patch.
 //   OMP_NUM_THREADS=1 build/ci/bench/sweep_tyre [n_theta n_section n_wall order damping_inflate damping_plate
-//                                               plate_speed max_deflection out.csv wall]
+//                                               plate_speed max_deflection out.csv wall crown_radius]
 // wall: smeared (default, the one law), layered (TyreSpec::layered: rubber / cord layer / rubber through the
 // wall, n_wall odd >= 3), belted (layered plus the steel belt layer over the crown, TyreSpec::belted: the +-20 deg
 // plies read as their circumferential modulus with the lateral strain held) or belted_free (the same belt read as
 // the free laminate's E_x, TyreSpec::belt_laterally_free) or belted_rebar (the belt layer keeps the rubber and
 // carries the two +-20 deg steel-cord families as rebar, TyreSpec::belt_rebar: stiff round the wheel, soft across).
+// crown_radius: the inner tread arc's transverse radius R_t (default TyreSpec's 0.35 m, assumed; a flatter crown to
+// see what the belt does to the patch when the tread's camber is smaller).
 // Prints the set-up (DoFs, the critical step, the law), the inflation history and the plate's load-deflection
 // rows; writes them as CSV (phase,t,deflection,plate_force,rim_force_z,patch_length,patch_width,nodes_in_contact,
 // outer_radius,width,bead_axial).
@@ -18,6 +20,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 #include "core/kokkos_shim.hpp"
@@ -81,10 +84,24 @@ int main(int argc, char** argv) {
                  wall.c_str());
     return 2;
   }
+  const double crown_radius = argc > 11 ? std::atof(argv[11]) : so::TyreSpec{}.crown_radius;
+  if (!(crown_radius > 0.0)) {
+    std::fprintf(stderr, "sweep_tyre: argument 11 (crown_radius) is '%s'; allowed: a radius > 0 in m\n", argv[11]);
+    return 2;
+  }
+  try {
+    so::TyreSpec check{};
+    check.crown_radius = crown_radius;
+    so::tyre_section(check);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "sweep_tyre: argument 11 (crown_radius) %g m: %s\n", crown_radius, e.what());
+    return 2;
+  }
   const double p = 0.35e6, t_inflate = 0.010, t_hold = 0.010;
   polymech::kx::initialize();
   {
     so::TyreSpec spec{};
+    spec.crown_radius = crown_radius;
     spec.belted = wall == "belted" || wall == "belted_free" || wall == "belted_rebar";
     spec.belt_rebar = wall == "belted_rebar";
     spec.belt_laterally_free = wall == "belted_free";
