@@ -35,6 +35,19 @@
 //               end), duration (s, default 0.25); models/flow/turek_hron.hpp
 //   [accuracy]  default = "paper" unless set; the presets' factors as every scene
 //
+// The flow-driven piezoelectric harvester (seed 002 paper 1 case 2, models/fsi/flow_harvester.hpp; run by
+// apps/turek_hron/harvester.cpp): [case] benchmark = "harvester" (no `test` key) with inflow (m/s, default 0.85),
+// density (1.204 kg/m^3), viscosity (1.516e-5 m^2/s), side (the square cylinder's D in m; default 0: the lock-in
+// side St U / f_1, fsi::lock_in_side), plate_length (0.27 m), piezo_thickness (0.2e-3 m, each PZT-5A layer),
+// host_thickness (0.2e-3 m, brass), resistance (ohm per metre of span; default 0: 1 / (omega_1 C_p)), zeta (the
+// damping ratio at omega_1, 0.01), smagorinsky (C_s of the eddy viscosity, 0.1; 0: none), scheme = "monolithic"
+// (default: piezo-structure and circuit together in each FSI iterate) | "partitioned" (paper 1's Fig. 3: the
+// piezo-circuit loop nested in the FSI loop); [mesh] level 0..4 (the harvester channel, 272 x 4^level + 6 x
+// 2^level cells) with fsi2's preset rule; [time] dt (at accuracy "paper", doubled per level off), end_time,
+// ramp_time (default 1 s), gust (the transverse gust over the ramp, of U; default 0.02), window (s, the summary's
+// statistics over the last `window` seconds; default end_time / 3), sample_every; [coupling] as fsi2's
+// (tolerance 1e-6 per step relative to max(|G(x)|, 1 mm)). No [solver], [kick].
+//
 // Every problem is a SceneError naming the file, line, key and what is allowed. Host-only and free of Kokkos.
 #pragma once
 
@@ -66,7 +79,15 @@ struct FlowSetup {
   std::string coupling_method = "iqn-ils";
   double coupling_tolerance = 1e-8, coupling_omega = 0.5;
   int coupling_max_iterations = 50, coupling_reuse = 8;
-  std::string name() const { return flap ? std::string("flap") : (fsi ? "fsi" : "cfd") + std::to_string(test); }
+  // benchmark = "harvester" (fsi and transient set too; test 0): models/fsi/flow_harvester.hpp's FlowHarvesterCase
+  bool harvester = false;
+  double side = 0.0, plate_length = 0.27, piezo_thickness = 0.2e-3, host_thickness = 0.2e-3;
+  double resistance = 0.0, zeta = 0.01, smagorinsky = 0.1, gust = 0.02, window = 0.0;
+  std::string scheme = "monolithic";
+  std::string name() const {
+    if (harvester) return "harvester";
+    return flap ? std::string("flap") : (fsi ? "fsi" : "cfd") + std::to_string(test);
+  }
   std::int64_t steps() const { return transient ? static_cast<std::int64_t>(end_time / dt + 0.5) : 0; }
 };
 
@@ -81,6 +102,10 @@ struct FlowScene {
 // channel at `level`: counted on levels 0-3 (models/flow/mesh.hpp), x4 per level above.
 double flow_channel_cells(int level);
 double flow_channel_unknowns(int level);
+// The harvester channel's cells at `level` (models/flow/harvester_mesh.hpp; 272 f^2 + 6 f, f = 2^level, counted on
+// levels 0-3) and its free unknowns (counted on levels 0-3, x4 per level above).
+double flow_harvester_cells(int level);
+double flow_harvester_unknowns(int level);
 
 // What a run costs: the Newton iterations (steady) or the time steps (one factorisation each with the chord
 // iteration), each dominated by the sparse LU (docs/PERFORMANCE.md, issue 36); for fsi1 the fluid's Newton

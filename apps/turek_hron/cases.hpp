@@ -64,4 +64,12 @@ int run_turek_hron_fsi1(const io::FlowScene& scene, const CommonOptions& opt);
 // --restart as every time-stepping app (restart.hpp).
 int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& restart);
 
+// The flow-driven piezoelectric harvester (seed 002 paper 1 case 2; [case] benchmark = "harvester"):
+// fsi::FlowHarvester from rest with the ramped inflow (apps/turek_hron/harvester.cpp); series.csv as the run goes,
+// summary.json with the tip, lift, drag, voltage and power statistics over the last `window` seconds against the
+// plate's first frequency, the coupling evaluations and circuit solves per step, the CPU split. Returns 1 when the
+// coupling or the fluid's Newton iteration stopped; summary.json then says why (`reason`). Checkpoints and
+// --restart as every time-stepping app (restart.hpp).
+int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& restart);
+
 }  // namespace polymech::apps

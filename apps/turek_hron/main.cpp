@@ -16,6 +16,10 @@
 //                 code 1 when the coupling stops;
 //   flap       -> the weakly coupled check (CSM3's flag under gravity in the fluid at rest), the same loop:
 //                 summary.json's "flap" keys, the period of uy(A) against the same flag's in vacuo.
+//   harvester  -> the flow-driven piezoelectric harvester (seed 002 paper 1 case 2, [case] benchmark = "harvester";
+//                 apps/turek_hron/harvester.cpp): series.csv (t, tip, drag, lift, voltage, power, ...), summary.json
+//                 with the statistics over the last window against the plate's first frequency, `reason` and exit
+//                 code 1 when the coupling stops.
 //   turek_hron [--scene scenes/flow/cfd1.toml] [--out out/turek_hron] [--accuracy draft|standard|paper]
 //              [--steps N] [--dry-run] [--threads 1]
 //              [--restart OUT] [--checkpoint-every S] [--checkpoint-steps N]   (the time-dependent cfd3, fsi2, fsi3)
@@ -30,7 +34,8 @@ namespace pm = polymech;
 
 int main(int argc, char** argv) {
   CLI::App app{"The Turek-Hron CFD and FSI tests: steady CFD1, CFD2 and periodic CFD3 past the cylinder and rigid flag, "
-               "steady FSI1 and periodic FSI2, FSI3 with the elastic flag (Taylor-Hood Navier-Stokes, partitioned coupling, issue 36)"};
+               "steady FSI1 and periodic FSI2, FSI3 with the elastic flag, the flow-driven piezoelectric harvester (Taylor-Hood Navier-Stokes, "
+               "partitioned coupling, issue 36)"};
   pm::apps::CommonOptions opt;
   pm::apps::add_common_options(app, opt, "scenes/flow/cfd1.toml", "out/turek_hron");
   pm::apps::RestartOptions ropt;
@@ -46,6 +51,7 @@ int main(int argc, char** argv) {
     const auto cost = transient ? pm::apps::with_steps(scene.cost, scene.config.steps(), opt.steps) : scene.cost;
     if (pm::apps::announce_cost("turek_hron", scene.header, cost, opt)) return 0;
     pm::apps::KokkosSession kokkos(opt);
+    if (scene.config.harvester) return pm::apps::run_flow_harvester(scene, opt, ropt);
     if (scene.config.fsi)
       return transient ? pm::apps::run_turek_hron_fsi_transient(scene, opt, ropt) : pm::apps::run_turek_hron_fsi1(scene, opt);
     return transient ? pm::apps::run_turek_hron_transient(scene, opt, ropt) : pm::apps::run_turek_hron_steady(scene, opt);

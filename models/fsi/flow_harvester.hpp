@@ -43,6 +43,7 @@
 
 #include "flow/harvester_mesh.hpp"
 #include "flow/navier_stokes.hpp"
+#include "flow/time_state_archive.hpp"
 #include "fsi/coupling.hpp"
 #include "fsi/mesh_motion.hpp"
 #include "piezo/cases.hpp"
@@ -176,6 +177,66 @@ class FlowHarvester {
   // The sum of the last loads handed to the structure (the fluid's force on the plate, wet nodes incl. the
   // clamped root's, N/m) and the part the free nodes received.
   const double* plate_force() const { return plate_force_; }
+
+  // The state one step hands to the next, into a checkpoint (apps/turek_hron/harvester.cpp) and back, as
+  // TurekHronFsiTransient's: the fluid's time state (its mesh is X + d_n), the mesh displacement at t_n and t_n-1,
+  // the wet nodes' x_n, the piezo transient's whole state (x, v, a, Q, the partitioned loop's Broyden Jacobian,
+  // the last external load, the work sums, step, time, base acceleration, energy0), the coupling's Aitken omega and
+  // IQN-ILS columns, the plate force, the timings and counts. load() on a model built from the same case continues
+  // bitwise.
+  void save(models::Archive& a, const std::string& prefix) const {
+    flow::save_time_state(a, prefix + "fluid/", fluid_->time_state());
+    a.put_vector(prefix + "d_n", d_n_);
+    a.put_vector(prefix + "d_m", d_m_);
+    a.put_vector(prefix + "x_n", x_n_);
+    const piezo::TransientState& t = transient_->state();
+    a.put(prefix + "piezo/step", t.step);
+    a.put_vector(prefix + "piezo/scalars", std::vector<double>{t.time, t.base_acceleration, t.work_in, t.work_damping, t.work_circuit,
+                                                               t.energy0});
+    a.put_vector(prefix + "piezo/x", t.x);
+    a.put_vector(prefix + "piezo/v", t.v);
+    a.put_vector(prefix + "piezo/a", t.a);
+    a.put_vector(prefix + "piezo/Q", t.Q);
+    a.put_vector(prefix + "piezo/jacobian", t.jacobian);
+    a.put_vector(prefix + "piezo/f_ext", t.f_ext);
+    a.put_vector(prefix + "plate_force", std::vector<double>{plate_force_[0], plate_force_[1]});
+    a.put(prefix + "timings", timings_);
+    coupling_.save(a, prefix + "coupling/");
+  }
+  void load(const models::Archive& a, const std::string& prefix) {
+    auto same = [&](const std::vector<double>& v, const std::vector<double>& like, const char* what) {
+      if (v.size() != like.size())
+        throw std::runtime_error("checkpoint: " + prefix + what + " has " + std::to_string(v.size()) + " values, this model " +
+                                 std::to_string(like.size()));
+      return v;
+    };
+    d_n_ = same(a.get_vector<double>(prefix + "d_n"), d_n_, "d_n");
+    d_m_ = same(a.get_vector<double>(prefix + "d_m"), d_m_, "d_m");
+    x_n_ = same(a.get_vector<double>(prefix + "x_n"), x_n_, "x_n");
+    piezo::TransientState t;
+    t.step = a.get<std::int64_t>(prefix + "piezo/step");
+    const std::vector<double> sc = a.get_vector<double>(prefix + "piezo/scalars");
+    if (sc.size() != 6) throw std::runtime_error("checkpoint: " + prefix + "piezo/scalars has " + std::to_string(sc.size()) + " values, not 6");
+    t.time = sc[0], t.base_acceleration = sc[1], t.work_in = sc[2], t.work_damping = sc[3], t.work_circuit = sc[4], t.energy0 = sc[5];
+    t.x = a.get_vector<double>(prefix + "piezo/x");
+    t.v = a.get_vector<double>(prefix + "piezo/v");
+    t.a = a.get_vector<double>(prefix + "piezo/a");
+    t.Q = a.get_vector<double>(prefix + "piezo/Q");
+    t.jacobian = a.get_vector<double>(prefix + "piezo/jacobian");
+    t.f_ext = a.get_vector<double>(prefix + "piezo/f_ext");
+    try {
+      transient_->restore(t);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error("checkpoint: " + prefix + "piezo: " + e.what());
+    }
+    const std::vector<double> pf = a.get_vector<double>(prefix + "plate_force");
+    if (pf.size() != 2) throw std::runtime_error("checkpoint: " + prefix + "plate_force has " + std::to_string(pf.size()) + " values, not 2");
+    plate_force_[0] = pf[0], plate_force_[1] = pf[1];
+    timings_ = a.get<FlowHarvesterTimings>(prefix + "timings");
+    coupling_.load(a, prefix + "coupling/");
+    fluid_->set_time_state(flow::load_time_state(a, prefix + "fluid/"));
+    fluid_->set_coordinates(motion_->coordinates(d_n_));  // the fluid's mesh at t_n, as the last step left it
+  }
 
   // One coupled step; throws std::runtime_error when the coupling or a sub-solver fails.
   FlowHarvesterStep step() {

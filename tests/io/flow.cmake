@@ -45,3 +45,19 @@ flow_app_test(turek_hron_fsi2_coupling_stops ${CMAKE_CURRENT_SOURCE_DIR}/data/fs
 flow_app_test(turek_hron_flap_steps ${PROJECT_SOURCE_DIR}/scenes/flow/flap.toml
   "exit code 0: .*summary.json: .*\"converged\": true,.*\"first_min_uy\": -0\\.12[0-9]*,.*\"period_ratio\": 1\\.0(0[1-9]|1[0-9])[0-9]*,.*\"test\": \"flap\""
   --accuracy draft --steps 60)
+# The flow-driven harvester (seed 002 paper 1 case 2, [case] benchmark = "harvester"; apps/turek_hron/harvester.cpp):
+# a misspelt [case] key, a negative cylinder side and an unknown scheme exit 2 naming file:line:key and what is
+# allowed; 20 steps at level 0 with the nested (partitioned) loop (~0.5 s) write series.csv and a summary whose
+# keys are numbers (the run shorter than its window: the note says so); a coupling cut to one evaluation per step
+# writes the reason and exits 1.
+flow_app_test(turek_hron_harvester_names_a_bad_key ${CMAKE_CURRENT_SOURCE_DIR}/data/harvester_bad_key.toml
+  "exit code 2: turek_hron: error: .*harvester_bad_key.toml:11:1: unknown key 'case.plate_lenght'; allowed in \\[case\\]: .*plate_length.*summary.json: missing")
+flow_app_test(turek_hron_harvester_negative_side ${CMAKE_CURRENT_SOURCE_DIR}/data/harvester_negative_side.toml
+  "exit code 2: turek_hron: error: .*harvester_negative_side.toml:11:1: key 'case.side' = -0.03 is out of range: must be in \\[0, 10\\] m.*lock-in side.*summary.json: missing")
+flow_app_test(turek_hron_harvester_bad_scheme ${CMAKE_CURRENT_SOURCE_DIR}/data/harvester_bad_scheme.toml
+  "exit code 2: turek_hron: error: .*harvester_bad_scheme.toml:11:1: key 'case.scheme' = \"nested\" is not allowed; allowed: \"monolithic\", \"partitioned\".*summary.json: missing")
+flow_app_test(turek_hron_harvester_steps ${CMAKE_CURRENT_SOURCE_DIR}/data/harvester_partitioned.toml
+  "exit code 0: .*summary.json: .*\"cells\": 278,.*\"circuit_solves_per_step\": [1-9][0-9.]*,.*\"converged\": true,.*\"coupling_evaluations_per_step\": [1-9][0-9.]*,.*\"drag_amplitude\": ${flow_num}.*\"drag_mean\": ${flow_num}.*\"f1_sc_Hz\": 3\\.7[0-9]*,.*\"files\": \\[[^]]*\"series.csv\".*\"level\": 0,.*\"lift_amplitude\": ${flow_num}.*\"lift_frequency\": ${flow_num}.*\"power_mean\": ${flow_num}.*\"scheme\": \"partitioned\",.*\"steps\": 20,.*\"test\": \"harvester\",.*\"tip_amplitude\": ${flow_num}.*\"tip_frequency\": ${flow_num}.*\"voltage_amplitude\": ${flow_num}"
+  --steps 20)
+flow_app_test(turek_hron_harvester_coupling_stops ${CMAKE_CURRENT_SOURCE_DIR}/data/harvester_coupling_stops.toml
+  "exit code 1: .*step 1: .*the coupling did not converge.*summary.json: .*\"converged\": false,.*\"reason\": \"step 1: flow harvester: the coupling did not converge")
