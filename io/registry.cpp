@@ -70,7 +70,7 @@ const std::vector<SceneKind>& scene_kinds() {
        {"piezo_harvester"}, [](const std::filesystem::path& f) { load_piezo_scene(f); },
        [](const std::filesystem::path&) { return std::string("piezo_harvester"); },
        [](const std::filesystem::path& f) { return load_piezo_scene(f).cost; }},
-      {"flow", "incompressible Navier-Stokes, Taylor-Hood: the Turek-Hron CFD1-CFD3 tests (seed 002 paper 1, issue 36)",
+      {"flow", "incompressible Navier-Stokes, Taylor-Hood: the Turek-Hron CFD and FSI tests, the flow-driven piezoelectric harvester (seed 002 paper 1, issue 36)",
        {"turek_hron"}, [](const std::filesystem::path& f) { load_flow_scene(f); },
        [](const std::filesystem::path&) { return std::string("turek_hron"); },
        [](const std::filesystem::path& f) { return load_flow_scene(f).cost; }},
