@@ -113,6 +113,15 @@ int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, con
   c.coupling.scale = 1e-3;
   c.coupling.max_iterations = s.coupling_max_iterations;
   c.coupling.reuse = s.coupling_reuse;
+  if (c.side == 0.0) {
+    // the lock-in side (the scene checked an explicit one against the plate's thickness): the mesh needs t < D / 2
+    const double d = fsi::lock_in_side(c), t = 2.0 * c.piezo_thickness + c.host_thickness;
+    if (!(t < 0.5 * d))
+      throw std::invalid_argument(scene.header.file.string() + ": key 'case.side' = 0 takes the lock-in side St U / f_1 = " +
+                                  models::format_g(d) + " m, and the plate (2 piezo_thickness + host_thickness = " + models::format_g(t) +
+                                  " m) must be thinner than half of it; allowed: side > " + models::format_g(2.0 * t) +
+                                  " m, or thinner layers");
+  }
   fsi::FlowHarvester model(c);
   const double two_pi = 2.0 * 3.14159265358979323846, f1_sc = model.omega_sc() / two_pi, f1_oc = model.omega_oc() / two_pi;
   const double side = model.config().side, reynolds = s.mean_velocity * side / s.viscosity;
