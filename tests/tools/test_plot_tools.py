@@ -148,6 +148,8 @@ def main():
     # the hydrostatic tank at standard accuracy (400 particles): its draft (100 particles, dt x 4) blows up
     if app("turek_hron", "cfd3", "--scene", os.path.join(scenes, "flow", "cfd3.toml"), "--accuracy", "draft", "--steps", "5"):
         tool("plot_turek_hron.py", ["cfd3"], ["forces.png"], "cfd3")
+    if app("turek_hron", "harvester", "--scene", os.path.join(src, "tests", "io", "data", "harvester_partitioned.toml"), "--steps", "20"):
+        tool("plot_turek_hron.py", ["harvester"], ["series.png"], "harvester")
     if app("isph", "hydrostatic", "--scene", os.path.join(scenes, "isph", "hydrostatic.toml"), "--accuracy", "standard",
            "--steps", "260"):
         tool("plot_isph.py", ["hydrostatic"], ["series.png", "particles.png", "pressure_profile.png"], "hydrostatic")
