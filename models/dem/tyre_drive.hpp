@@ -102,6 +102,9 @@ class TyreDrive {
     o.damping = tyre.damping;
     o.damping_frame = 0;
     o.cell_scale = solid::tyre_cell_scale(ts, tyre.around, tyre.across, tyre.through);  // empty: the smeared law
+    o.fibre_stiffness = solid::tyre_fibre_stiffness(ts, tyre.around, tyre.across, tyre.through);  // empty unless belt_rebar
+    o.fibre_angle_deg = ts.belt_angle_deg;
+    o.fibre_tension_only = ts.belt_tension_only;
     const double ramp = tyre.inflate_to;
     o.load_factor = [ramp](double t) { return t < ramp ? t / ramp : 1.0; };
     solid_ = std::make_shared<Solid>(c, solid::HyperelasticLaw(law.law), o, std::vector<solid::FollowerPressure>{{"zmin", tyre.pressure}},
