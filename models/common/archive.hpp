@@ -74,6 +74,15 @@ class Archive {
     if (!v.empty()) std::memcpy(v.data(), b.data(), b.size());
     return v;
   }
+  // get_vector with the size this model expects: a checkpoint of another model (another mesh or case) is refused
+  // with both sizes named.
+  template <class T>
+  std::vector<T> get_vector_sized(const std::string& name, std::size_t expected) const {
+    std::vector<T> v = get_vector<T>(name);
+    if (v.size() != expected)
+      throw std::runtime_error("checkpoint: " + name + " has " + std::to_string(v.size()) + " values, this model " + std::to_string(expected));
+    return v;
+  }
   std::string get_string(const std::string& name) const {
     const auto& b = bytes(name);
     return std::string(b.begin(), b.end());

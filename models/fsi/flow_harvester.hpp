@@ -204,19 +204,12 @@ class FlowHarvester {
     coupling_.save(a, prefix + "coupling/");
   }
   void load(const models::Archive& a, const std::string& prefix) {
-    auto same = [&](const std::vector<double>& v, const std::vector<double>& like, const char* what) {
-      if (v.size() != like.size())
-        throw std::runtime_error("checkpoint: " + prefix + what + " has " + std::to_string(v.size()) + " values, this model " +
-                                 std::to_string(like.size()));
-      return v;
-    };
-    d_n_ = same(a.get_vector<double>(prefix + "d_n"), d_n_, "d_n");
-    d_m_ = same(a.get_vector<double>(prefix + "d_m"), d_m_, "d_m");
-    x_n_ = same(a.get_vector<double>(prefix + "x_n"), x_n_, "x_n");
+    d_n_ = a.get_vector_sized<double>(prefix + "d_n", d_n_.size());
+    d_m_ = a.get_vector_sized<double>(prefix + "d_m", d_m_.size());
+    x_n_ = a.get_vector_sized<double>(prefix + "x_n", x_n_.size());
     piezo::TransientState t;
     t.step = a.get<std::int64_t>(prefix + "piezo/step");
-    const std::vector<double> sc = a.get_vector<double>(prefix + "piezo/scalars");
-    if (sc.size() != 6) throw std::runtime_error("checkpoint: " + prefix + "piezo/scalars has " + std::to_string(sc.size()) + " values, not 6");
+    const std::vector<double> sc = a.get_vector_sized<double>(prefix + "piezo/scalars", 6);
     t.time = sc[0], t.base_acceleration = sc[1], t.work_in = sc[2], t.work_damping = sc[3], t.work_circuit = sc[4], t.energy0 = sc[5];
     t.x = a.get_vector<double>(prefix + "piezo/x");
     t.v = a.get_vector<double>(prefix + "piezo/v");
@@ -229,8 +222,7 @@ class FlowHarvester {
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error("checkpoint: " + prefix + "piezo: " + e.what());
     }
-    const std::vector<double> pf = a.get_vector<double>(prefix + "plate_force");
-    if (pf.size() != 2) throw std::runtime_error("checkpoint: " + prefix + "plate_force has " + std::to_string(pf.size()) + " values, not 2");
+    const std::vector<double> pf = a.get_vector_sized<double>(prefix + "plate_force", 2);
     plate_force_[0] = pf[0], plate_force_[1] = pf[1];
     timings_ = a.get<FlowHarvesterTimings>(prefix + "timings");
     coupling_.load(a, prefix + "coupling/");

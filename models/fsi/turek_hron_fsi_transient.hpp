@@ -136,18 +136,12 @@ class TurekHronFsiTransient : public TurekHronFsi {
     coupling_.save(a, prefix + "coupling/");
   }
   void load(const models::Archive& a, const std::string& prefix) {
-    auto same = [&](const std::vector<double>& v, const std::vector<double>& like, const char* what) {
-      if (v.size() != like.size())
-        throw std::runtime_error("checkpoint: " + prefix + what + " has " + std::to_string(v.size()) + " values, this model " +
-                                 std::to_string(like.size()));
-      return v;
-    };
-    u_n_ = same(a.get_vector<double>(prefix + "u_n"), u_n_, "u_n");
-    v_n_ = same(a.get_vector<double>(prefix + "v_n"), v_n_, "v_n");
-    a_n_ = same(a.get_vector<double>(prefix + "a_n"), a_n_, "a_n");
-    d_n_ = same(a.get_vector<double>(prefix + "d_n"), d_n_, "d_n");
-    d_m_ = same(a.get_vector<double>(prefix + "d_m"), d_m_, "d_m");
-    x_n_ = same(a.get_vector<double>(prefix + "x_n"), x_n_, "x_n");
+    u_n_ = a.get_vector_sized<double>(prefix + "u_n", u_n_.size());
+    v_n_ = a.get_vector_sized<double>(prefix + "v_n", v_n_.size());
+    a_n_ = a.get_vector_sized<double>(prefix + "a_n", a_n_.size());
+    d_n_ = a.get_vector_sized<double>(prefix + "d_n", d_n_.size());
+    d_m_ = a.get_vector_sized<double>(prefix + "d_m", d_m_.size());
+    x_n_ = a.get_vector_sized<double>(prefix + "x_n", x_n_.size());
     timings_ = a.get<TurekHronFsiTimings>(prefix + "timings");
     solid_->set_reference_force_max(a.get<double>(prefix + "solid_reference_force_max"));
     coupling_.load(a, prefix + "coupling/");
