@@ -47,7 +47,9 @@ def plot_sweep(path, out):
     s = load_csv(path, required=("ratio_lift_f1", "tip_amplitude_m", "power_mean_W_per_m", "inflow", "length_m"))
     plt = pyplot()
     fig, axes = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    ratio = s["ratio_lift_f1"]
+    # the lift's spectral peak where the sweep's table has it (docs/figures/fsi/harvester_l0_speed_sweep.csv), else
+    # the frequency from its upward crossings of the mean (bench/sweep_flow_harvester's own column)
+    ratio = s["f_lift_fft_Hz"] / s["f1_sc_Hz"] if "f_lift_fft_Hz" in s else s["ratio_lift_f1"]
     for ax, k, label in ((axes[0], "tip_amplitude_m", "tip amplitude [m]"), (axes[1], "power_mean_W_per_m", "mean power [W/m]")):
         ax.semilogy(ratio, s[k], "o-")
         for r, v, u, l in zip(ratio, s[k], s["inflow"], s["length_m"]):
