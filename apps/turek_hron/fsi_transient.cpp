@@ -5,50 +5,26 @@
 // Newmark SVK flag, IQN-ILS / Aitken / relaxation on the wet nodes' displacement, models/fsi/coupling.hpp).
 // Writes series.csv as the run goes (t, drag, lift, ux, uy of point A, the step's coupling evaluations, |r|,
 // int div u) and summary.json with the benchmark's mean and amplitude over the last period of uy(A)
-// (fsi::turek_hron_fsi_period), against Table 13. Checkpoints and --restart (apps/turek_hron/loop_checkpoints.hpp):
-// the coupled model's state (TurekHronFsiTransient::save: fluid, mesh, solid, the coupling's IQN-ILS columns) and
-// the rows so far; a resumed run writes series.csv and summary.json as one never interrupted.
+// (fsi::turek_hron_fsi_period), against Table 13. The loop, its failures, progress, checkpoints and --restart are
+// the harvester's too (apps/turek_hron/step_loop.hpp): the coupled model's state (TurekHronFsiTransient::save: fluid,
+// mesh, solid, the coupling's IQN-ILS columns) and the rows so far; a resumed run writes series.csv and summary.json
+// as one never interrupted.
 // The flap (test = "flap", issue 36's weakly coupled check): CSM3's flag under gravity in the fluid at rest
 // (fsi::flap_case), the same loop; summary.json's "flap" keys: the period of uy(A) against the same flag's in vacuo
 // (fsi::run_flap without the fluid, run after the loop: cheap) and CSM3's reference (Table 6).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
-#include <stdexcept>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "apps/common/case.hpp"
 #include "apps/turek_hron/cases.hpp"
-#include "apps/turek_hron/loop_checkpoints.hpp"
+#include "apps/turek_hron/step_loop.hpp"
 #include "fsi/turek_hron_fsi_transient.hpp"
-#include "io/progress.hpp"
 
 namespace polymech::apps {
-
-namespace {
-
-// mean = (max + min) / 2, amplitude = (max - min) / 2 over every sample (a run too short for a period of uy)
-flow::PeriodicStats whole_run(const std::vector<fsi::TurekHronFsiStep>& rows, double fsi::TurekHronFsiStep::*field) {
-  flow::PeriodicStats p;
-  if (rows.empty()) return p;
-  double lo = rows.front().*field, hi = lo;
-  for (const auto& r : rows) lo = std::min(lo, r.*field), hi = std::max(hi, r.*field);
-  p.mean = 0.5 * (hi + lo);
-  p.amplitude = 0.5 * (hi - lo);
-  p.t_begin = rows.front().t;
-  p.t_end = rows.back().t;
-  return p;
-}
-
-void put_stats(nlohmann::json& j, const std::string& name, const flow::PeriodicStats& p) {
-  j[name + "_mean"] = p.mean;
-  j[name + "_amplitude"] = p.amplitude;
-}
-
-}  // namespace
 
 int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& ropt) {
   const auto& s = scene.config;
@@ -57,20 +33,10 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   CaseSpec spec("turek_hron", scene.header, steps, s.dt);
   spec.progress = false;  // the loop below keeps its own io::Progress
   Case cs(spec, opt, ropt);
-  // the run so far, into every checkpoint
-  std::vector<fsi::TurekHronFsiStep> rows;
-  rows.reserve(static_cast<std::size_t>(steps));
-  long evaluations = 0;
-  int max_evaluations = 0;
+  // the run so far (every step's row, the coupling evaluations, the largest |int div u|), into every checkpoint
   double max_div = 0.0;
-  double next_report = 0.5;
-  cs.records.add([&rows](models::Archive& a) { a.put_vector("turek_hron/rows", rows); },
-                 [&rows](const models::Archive& a) { rows = a.get_vector<fsi::TurekHronFsiStep>("turek_hron/rows"); });
-  cs.records.keep("turek_hron/evaluations", evaluations);
-  cs.records.keep("turek_hron/max_evaluations", max_evaluations);
-  cs.records.keep("turek_hron/max_div", max_div);
-  cs.records.keep("turek_hron/next_report", next_report);
-  LoopCheckpoints ck(cs);  // with --restart: the records above are the checkpoint's
+  CoupledStepLoop<fsi::TurekHronFsiStep> loop(cs, "turek_hron", steps, s, 0.5,
+                                              [&max_div](Records& r) { r.keep("turek_hron/max_div", max_div); });
   // flap: CSM3's flag under gravity in the fluid at rest (fsi::flap_case; the scene's inflow, density, viscosity below)
   fsi::TurekHronFsiCase c = s.flap ? fsi::flap_case(s.level, s.density, s.viscosity) : fsi::turek_hron_fsi_case(test, s.level);
   c.mean_velocity = s.mean_velocity;
@@ -95,82 +61,31 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
                  static_cast<long long>(model.mesh_unknowns()), static_cast<long long>(model.solid_unknowns()), model.interface_nodes(), s.dt,
                  s.scene_dt, static_cast<long long>(steps), static_cast<double>(steps) * s.dt, s.coupling_method.c_str(), s.coupling_tolerance,
                  thread_count().c_str());
-  if (ck.resume()) model.load(*ck.resume(), "model/");
-  // series.csv: written as the run goes; a restarted run writes the rows of the steps before it again
-  FILE* fp = std::fopen((cs.out() / "series.csv").c_str(), "w");
-  if (!fp) throw std::runtime_error("cannot write " + (cs.out() / "series.csv").string());
-  std::fprintf(fp, "t,drag,lift,ux,uy,evaluations,residual,int_div_u\n");
-  auto write_row = [&](std::int64_t k, const fsi::TurekHronFsiStep& r) {
-    if (k % s.sample_every == 0)
-      std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%d,%.3e,%.3e\n", r.t, r.drag, r.lift, r.ux, r.uy, r.evaluations, r.residual,
-                   r.net_flux);
-  };
-  for (std::size_t i = 0; i < rows.size(); ++i) write_row(static_cast<std::int64_t>(i) + 1, rows[i]);
-  io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
-  progress.resume_at(ck.first_step());
-  bool failed = false;
-  std::string reason;
-  for (std::int64_t k = ck.first_step() + 1; k <= steps; ++k) {
-    fsi::TurekHronFsiStep r;
-    try {
-      r = model.step();
-    } catch (const std::runtime_error& e) {  // the coupling stopped, or a fluid or solid Newton iteration inside it
-      failed = true;
-      reason = "step " + std::to_string(k) + ": " + e.what();
-      break;
-    }
-    if (!std::isfinite(r.drag) || !std::isfinite(r.lift) || !std::isfinite(r.ux) || !std::isfinite(r.uy)) {
-      failed = true;
-      reason = "step " + std::to_string(k) + " (t = " + models::format_g(r.t) + " s): a non-finite force or displacement";
-      break;
-    }
-    rows.push_back(r);
-    evaluations += r.evaluations;
-    max_evaluations = std::max(max_evaluations, r.evaluations);
-    max_div = std::max(max_div, std::abs(r.net_flux));
-    write_row(k, r);
-    if (k % 20 == 0) std::fflush(fp);
-    progress.update(k);
-    if (!opt.quiet && r.t >= next_report - 1e-9) {
-      std::fprintf(stderr, "  t = %.2f s: ux(A) %.4e, uy(A) %.4e m, drag %.3f, lift %.3f N/m; %.2f evaluations per step; CPU %.0f s "
-                   "(%.3f s per step)\n", r.t, r.ux, r.uy, r.drag, r.lift, static_cast<double>(evaluations) / static_cast<double>(k),
-                   ck.cpu_seconds(), ck.cpu_seconds() / static_cast<double>(k));
-      next_report += 0.5;
-    }
-    ck.after_step(k, steps, [&](models::Archive& a) { model.save(a, "model/"); });
-  }
-  std::fclose(fp);
-  const auto done = static_cast<std::int64_t>(rows.size());
-  progress.done(done);
-  const double cpu = ck.cpu_seconds();  // the interrupted processes' included
-  const double wall = ck.wall_seconds();
+  loop.run(
+      model, opt.quiet, "t,drag,lift,ux,uy,evaluations,residual,int_div_u\n",
+      [](FILE* fp, const fsi::TurekHronFsiStep& r) {
+        std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%d,%.3e,%.3e\n", r.t, r.drag, r.lift, r.ux, r.uy, r.evaluations, r.residual,
+                     r.net_flux);
+      },
+      [](const fsi::TurekHronFsiStep& r) -> const char* {
+        const bool finite = std::isfinite(r.drag) && std::isfinite(r.lift) && std::isfinite(r.ux) && std::isfinite(r.uy);
+        return finite ? nullptr : "a non-finite force or displacement";
+      },
+      [&max_div](const fsi::TurekHronFsiStep& r) { max_div = std::max(max_div, std::abs(r.net_flux)); },
+      [](const fsi::TurekHronFsiStep& r) {
+        std::fprintf(stderr, "  t = %.2f s: ux(A) %.4e, uy(A) %.4e m, drag %.3f, lift %.3f N/m", r.t, r.ux, r.uy, r.drag, r.lift);
+      });
+  const auto& rows = loop.rows;
+  const double cpu = loop.cpu_seconds();  // the interrupted processes' included
+  const double per_step = loop.evaluations_per_step();
   const auto& t = model.timings();
   nlohmann::json j = cs.summary();
   j["test"] = test;
-  j["analysis"] = "transient";
   put_fsi_sizes(j, model, s.level);
-  j["dt"] = s.dt;
-  j["dt_paper"] = s.scene_dt;
-  j["ramp_time"] = s.ramp_time;
-  j["steps"] = done;
-  j["end_time"] = rows.empty() ? 0.0 : rows.back().t;
-  j["converged"] = !failed;
-  if (failed) j["reason"] = reason;
-  const double per_step = done > 0 ? static_cast<double>(evaluations) / static_cast<double>(done) : 0.0;
-  j["coupling"] = {{"method", s.coupling_method}, {"tolerance", s.coupling_tolerance}, {"scale", 1e-3},
-                   {"max_iterations", s.coupling_max_iterations}, {"evaluations", evaluations},
-                   {"evaluations_per_step", per_step}, {"max_evaluations_per_step", max_evaluations}};
-  j["coupling_evaluations"] = t.evaluations;  // every evaluation of G, a failed step's included
-  j["coupling_evaluations_per_step"] = per_step;
-  j["fluid_newton_iterations"] = t.fluid_newton;
+  loop.put_summary(j, model);
   j["solid_newton_iterations"] = t.solid_newton;
   j["max_abs_int_div_u"] = max_div;
-  j["cpu_seconds"] = cpu;
-  j["cpu_seconds_per_step"] = done > 0 ? cpu / static_cast<double>(done) : 0.0;
-  j["wall_seconds"] = wall;
   j["cpu_split"] = {{"setup", t.setup}, {"mesh_motion", t.mesh}, {"fluid", t.fluid}, {"solid", t.solid}};
-  j["fluid_split"] = flow_cpu_split(model.fluid().timings());  // this process's (a restarted run: since the restart)
-  j["restarts"] = ck.restarts();
   if (s.flap) {
     // the weakly coupled check: the period of uy(A) against the same flag's in vacuo (same mesh, Newmark, dt;
     // fsi::run_flap, the fluid left out), and CSM3's (Turek & Hron 2006, Table 6: 1.0995 Hz, uy(A) down to
@@ -202,10 +117,10 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
   const bool periodic = fsi::turek_hron_fsi_period(rows, 0, p) && p.uy.amplitude > 1e-6;
   j["periodic"] = periodic;
   if (periodic) {
-    put_stats(j, "ux", p.ux);
-    put_stats(j, "uy", p.uy);
-    put_stats(j, "drag", p.drag);
-    put_stats(j, "lift", p.lift);
+    put_window(j, "ux", p.ux);
+    put_window(j, "uy", p.uy);
+    put_window(j, "drag", p.drag);
+    put_window(j, "lift", p.lift);
     j["frequency"] = p.uy.frequency;
     j["period_window"] = {p.uy.t_begin, p.uy.t_end};
     if (!s.flap)  // the flap's reference is CSM3's in vacuo: its "flap" keys above
@@ -222,10 +137,11 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
                               {"window", {q.uy.t_begin, q.uy.t_end}}};
   } else {
     // no full period of uy(A) yet: the same keys over the whole run (the ramp included), frequency 0
-    put_stats(j, "ux", whole_run(rows, &fsi::TurekHronFsiStep::ux));
-    put_stats(j, "uy", whole_run(rows, &fsi::TurekHronFsiStep::uy));
-    put_stats(j, "drag", whole_run(rows, &fsi::TurekHronFsiStep::drag));
-    put_stats(j, "lift", whole_run(rows, &fsi::TurekHronFsiStep::lift));
+    const double all = -std::numeric_limits<double>::infinity();
+    put_window(j, "ux", window_stats(rows, &fsi::TurekHronFsiStep::ux, all));
+    put_window(j, "uy", window_stats(rows, &fsi::TurekHronFsiStep::uy, all));
+    put_window(j, "drag", window_stats(rows, &fsi::TurekHronFsiStep::drag, all));
+    put_window(j, "lift", window_stats(rows, &fsi::TurekHronFsiStep::lift, all));
     j["frequency"] = 0.0;
     j["period_window"] = {rows.empty() ? 0.0 : rows.front().t, rows.empty() ? 0.0 : rows.back().t};
     j["note"] = "no full period of uy(A) yet: the means and amplitudes are over the whole run";
@@ -246,12 +162,8 @@ int run_turek_hron_fsi_transient(const io::FlowScene& scene, const CommonOptions
     std::printf("turek_hron: %s level %d dt %g to t = %g s: no full period of uy(A) yet (uy %.4e m, drag %.3f, lift %.3f at the end); %.2f "
                 "evaluations per step; CPU %.1f s%s; results in %s\n", name, s.level, s.dt, j["end_time"].get<double>(),
                 rows.empty() ? 0.0 : rows.back().uy, rows.empty() ? 0.0 : rows.back().drag, rows.empty() ? 0.0 : rows.back().lift, per_step,
-                cpu, failed ? " (STOPPED)" : "", cs.out().c_str());
-  if (failed) {
-    std::fprintf(stderr, "turek_hron: %s\n", reason.c_str());
-    return 1;
-  }
-  return rc;
+                cpu, loop.failed ? " (STOPPED)" : "", cs.out().c_str());
+  return loop.exit_code(rc);
 }
 
 }  // namespace polymech::apps

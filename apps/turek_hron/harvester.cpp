@@ -14,61 +14,22 @@
 //                mean) of tip, lift and drag, the voltage amplitude, the mean power, lift_frequency / f1_sc (the
 //                lock-in ratio); the coupling evaluations and circuit solves per step, the CPU split. A failed run
 //                (the fluid's Newton iteration or the coupling stopped) exits 1 with `reason`.
-// Checkpoints and --restart (apps/turek_hron/loop_checkpoints.hpp): the model's state (FlowHarvester::save) and
-// every step's row; a resumed run writes series.csv and summary.json as one never interrupted.
+// The loop, its failures, progress, checkpoints and --restart are FSI2's (apps/turek_hron/step_loop.hpp): the
+// model's state (FlowHarvester::save) and every step's row; a resumed run writes series.csv and summary.json as one
+// never interrupted.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "apps/common/case.hpp"
 #include "apps/turek_hron/cases.hpp"
-#include "apps/turek_hron/loop_checkpoints.hpp"
+#include "apps/turek_hron/step_loop.hpp"
 #include "common/host_copy.hpp"
 #include "fsi/flow_harvester.hpp"
-#include "io/progress.hpp"
 
 namespace polymech::apps {
-
-namespace {
-
-// Mean = (max + min) / 2 and amplitude = (max - min) / 2 of a field over the rows with t >= t0, its frequency from
-// the upward crossings of that mean (linear interpolation between rows; 0 with fewer than two crossings).
-struct WindowStats {
-  double mean = 0.0, amplitude = 0.0, frequency = 0.0;
-};
-WindowStats window_stats(const std::vector<fsi::FlowHarvesterStep>& rows, double fsi::FlowHarvesterStep::*field, double t0) {
-  WindowStats w;
-  double lo = 1e300, hi = -1e300;
-  for (const auto& r : rows)
-    if (r.t >= t0) lo = std::min(lo, r.*field), hi = std::max(hi, r.*field);
-  if (!(hi >= lo)) return w;
-  w.mean = 0.5 * (hi + lo);
-  w.amplitude = 0.5 * (hi - lo);
-  double first = 0.0, last = 0.0;
-  int up = 0;
-  for (std::size_t k = 1; k < rows.size(); ++k) {
-    const double a = rows[k - 1].*field, b = rows[k].*field;
-    if (rows[k - 1].t >= t0 && a < w.mean && b >= w.mean) {
-      const double t = rows[k - 1].t + (w.mean - a) / (b - a) * (rows[k].t - rows[k - 1].t);
-      if (up == 0) first = t;
-      last = t;
-      ++up;
-    }
-  }
-  if (up >= 2) w.frequency = static_cast<double>(up - 1) / (last - first);
-  return w;
-}
-
-void put_window(nlohmann::json& j, const std::string& name, const WindowStats& w, bool frequency) {
-  j[name + "_mean"] = w.mean;
-  j[name + "_amplitude"] = w.amplitude;
-  if (frequency) j[name + "_frequency"] = w.frequency;
-}
-
-}  // namespace
 
 int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, const RestartOptions& ropt) {
   const auto& s = scene.config;
@@ -76,19 +37,12 @@ int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, con
   CaseSpec spec("turek_hron", scene.header, steps, s.dt);
   spec.progress = false;  // the loop below keeps its own io::Progress
   Case cs(spec, opt, ropt);
-  // every step's row (the window's statistics need them all, series.csv every sample_every-th), into every checkpoint
-  std::vector<fsi::FlowHarvesterStep> rows;
-  rows.reserve(static_cast<std::size_t>(steps));
-  long evaluations = 0, circuit_solves = 0;
-  int max_evaluations = 0;
-  double next_report = 1.0;
-  cs.records.add([&rows](models::Archive& a) { a.put_vector("harvester/rows", rows); },
-                 [&rows](const models::Archive& a) { rows = a.get_vector<fsi::FlowHarvesterStep>("harvester/rows"); });
-  cs.records.keep("harvester/evaluations", evaluations);
-  cs.records.keep("harvester/circuit_solves", circuit_solves);
-  cs.records.keep("harvester/max_evaluations", max_evaluations);
-  cs.records.keep("harvester/next_report", next_report);
-  LoopCheckpoints ck(cs);  // with --restart: the records above are the checkpoint's
+  // every step's row (the window's statistics need them all, series.csv every sample_every-th), the coupling
+  // evaluations and circuit solves, into every checkpoint
+  long circuit_solves = 0;
+  CoupledStepLoop<fsi::FlowHarvesterStep> loop(cs, "harvester", steps, s, 1.0, [&circuit_solves](Records& r) {
+    r.keep("harvester/circuit_solves", circuit_solves);
+  });
 
   fsi::FlowHarvesterCase c;
   c.level = s.level;
@@ -133,62 +87,32 @@ int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, con
                  model.interface_nodes(), side, reynolds, s.plate_length, f1_sc, f1_oc, model.resistance(), s.dt, s.scene_dt,
                  static_cast<long long>(steps), static_cast<double>(steps) * s.dt, s.coupling_method.c_str(), s.coupling_tolerance,
                  s.scheme.c_str(), thread_count().c_str());
-  if (ck.resume()) model.load(*ck.resume(), "model/");
-  // series.csv: written as the run goes; a restarted run writes the rows of the steps before it again
-  FILE* fp = std::fopen((cs.out() / "series.csv").c_str(), "w");
-  if (!fp) throw std::runtime_error("cannot write " + (cs.out() / "series.csv").string());
-  std::fprintf(fp, "t,tip,drag,lift,voltage,power,evaluations,circuit_solves,residual\n");
-  auto write_row = [&](std::int64_t k, const fsi::FlowHarvesterStep& r) {
-    if (k % s.sample_every == 0)
-      std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%.12e,%d,%d,%.3e\n", r.t, r.tip, r.drag, r.lift, r.voltage, r.power, r.evaluations,
-                   r.circuit_iterations, r.residual);
-  };
-  for (std::size_t i = 0; i < rows.size(); ++i) write_row(static_cast<std::int64_t>(i) + 1, rows[i]);
-  io::Progress progress("turek_hron", steps, s.dt, !opt.quiet, 10.0);
-  progress.resume_at(ck.first_step());
-  bool failed = false;
-  std::string reason;
-  for (std::int64_t k = ck.first_step() + 1; k <= steps; ++k) {
-    fsi::FlowHarvesterStep r;
-    try {
-      r = model.step();
-    } catch (const std::runtime_error& e) {  // the coupling stopped, or the fluid's Newton iteration inside it
-      failed = true;
-      reason = "step " + std::to_string(k) + ": " + e.what();
-      break;
-    }
-    if (!std::isfinite(r.tip) || !std::isfinite(r.drag) || !std::isfinite(r.lift) || !std::isfinite(r.voltage)) {
-      failed = true;
-      reason = "step " + std::to_string(k) + " (t = " + models::format_g(r.t) + " s): a non-finite force, deflection or voltage";
-      break;
-    }
-    rows.push_back(r);
-    evaluations += r.evaluations;
-    circuit_solves += r.circuit_iterations;
-    max_evaluations = std::max(max_evaluations, r.evaluations);
-    write_row(k, r);
-    if (k % 20 == 0) std::fflush(fp);
-    progress.update(k);
-    if (!opt.quiet && r.t >= next_report - 1e-9) {
-      std::fprintf(stderr, "  t = %.2f s: tip %.4e m, drag %.4e, lift %.4e N/m, V %.4e V, P %.3e W/m; %.2f evaluations per step; CPU %.0f s "
-                   "(%.3f s per step)\n", r.t, r.tip, r.drag, r.lift, r.voltage, r.power,
-                   static_cast<double>(evaluations) / static_cast<double>(k), ck.cpu_seconds(), ck.cpu_seconds() / static_cast<double>(k));
-      next_report += 1.0;
-    }
-    ck.after_step(k, steps, [&](models::Archive& a) { model.save(a, "model/"); });
-  }
-  std::fclose(fp);
-  const auto done = static_cast<std::int64_t>(rows.size());
-  progress.done(done);
-  const double cpu = ck.cpu_seconds();  // the interrupted processes' included
-  const double wall = ck.wall_seconds();
+  loop.run(
+      model, opt.quiet, "t,tip,drag,lift,voltage,power,evaluations,circuit_solves,residual\n",
+      [](FILE* fp, const fsi::FlowHarvesterStep& r) {
+        std::fprintf(fp, "%.9g,%.12e,%.12e,%.12e,%.12e,%.12e,%d,%d,%.3e\n", r.t, r.tip, r.drag, r.lift, r.voltage, r.power, r.evaluations,
+                     r.circuit_iterations, r.residual);
+      },
+      [](const fsi::FlowHarvesterStep& r) -> const char* {
+        const bool finite = std::isfinite(r.tip) && std::isfinite(r.drag) && std::isfinite(r.lift) && std::isfinite(r.voltage);
+        return finite ? nullptr : "a non-finite force, deflection or voltage";
+      },
+      [&circuit_solves](const fsi::FlowHarvesterStep& r) { circuit_solves += r.circuit_iterations; },
+      [](const fsi::FlowHarvesterStep& r) {
+        std::fprintf(stderr, "  t = %.2f s: tip %.4e m, drag %.4e, lift %.4e N/m, V %.4e V, P %.3e W/m", r.t, r.tip, r.drag, r.lift,
+                     r.voltage, r.power);
+      });
+  const auto& rows = loop.rows;
+  const auto done = loop.done();
+  const double cpu = loop.cpu_seconds();  // the interrupted processes' included
+  const double per_step = loop.evaluations_per_step();
   const auto& t = model.timings();
-  const double end = rows.empty() ? 0.0 : rows.back().t;
+  const double end = loop.end_time();
   // the statistics' window: the last `window` seconds of the run (all of it when shorter: --steps)
   const double t0 = end - s.window;
   nlohmann::json j = cs.summary();
   j["test"] = "harvester";
-  j["analysis"] = "transient";
+  loop.put_summary(j, model);
   j["level"] = s.level;
   j["cells"] = model.fluid().mesh().element_count();
   j["unknowns"] = model.fluid_unknowns();
@@ -205,13 +129,6 @@ int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, con
   j["f1_oc_Hz"] = f1_oc;
   j["resistance"] = model.resistance();
   j["capacitance"] = model.capacitance();
-  j["dt"] = s.dt;
-  j["dt_paper"] = s.scene_dt;
-  j["ramp_time"] = s.ramp_time;
-  j["steps"] = done;
-  j["end_time"] = end;
-  j["converged"] = !failed;
-  if (failed) j["reason"] = reason;
   j["window"] = {std::max(t0, rows.empty() ? 0.0 : rows.front().t), end};
   if (t0 < (rows.empty() ? 0.0 : rows.front().t))
     j["note"] = "the run is shorter than time.window: the statistics are over the whole run (the ramp included)";
@@ -230,32 +147,16 @@ int run_flow_harvester(const io::FlowScene& scene, const CommonOptions& opt, con
   j["power_mean"] = in_window > 0 ? power / static_cast<double>(in_window) : 0.0;
   j["lift_frequency_ratio"] = lift.frequency / f1_sc;  // the shedding against the plate's first mode: 1 at lock-in
   j["tip_frequency_ratio"] = tip.frequency / f1_sc;
-  const double per_step = done > 0 ? static_cast<double>(evaluations) / static_cast<double>(done) : 0.0;
-  j["coupling"] = {{"method", s.coupling_method}, {"tolerance", s.coupling_tolerance}, {"scale", 1e-3},
-                   {"max_iterations", s.coupling_max_iterations}, {"evaluations", evaluations},
-                   {"evaluations_per_step", per_step}, {"max_evaluations_per_step", max_evaluations}};
-  j["coupling_evaluations"] = t.evaluations;  // every evaluation of G, a failed step's included
-  j["coupling_evaluations_per_step"] = per_step;
   j["circuit_solves"] = circuit_solves;
   j["circuit_solves_per_step"] = done > 0 ? static_cast<double>(circuit_solves) / static_cast<double>(done) : 0.0;
-  j["fluid_newton_iterations"] = t.fluid_newton;
-  j["cpu_seconds"] = cpu;
-  j["cpu_seconds_per_step"] = done > 0 ? cpu / static_cast<double>(done) : 0.0;
-  j["wall_seconds"] = wall;
   j["cpu_split"] = {{"setup", t.setup}, {"mesh", t.mesh}, {"fluid", t.fluid}, {"structure", t.structure}};
-  j["fluid_split"] = flow_cpu_split(model.fluid().timings());  // this process's (a restarted run: since the restart)
-  j["restarts"] = ck.restarts();
   const int rc = cs.finish(j, {"summary.json", "series.csv"});
   std::printf("turek_hron: harvester level %d dt %g to t = %g s (D %.4g m, Re %.0f, f1 %.4g Hz): over the last %g s tip %.4e +- %.4e m at "
               "%.4g Hz, lift %.4e +- %.4e N/m at %.4g Hz (x %.3f of f1), V +- %.4e V, P %.4e W/m; %.2f evaluations per step; CPU %.1f s%s; "
               "results in %s\n", s.level, s.dt, end, side, reynolds, f1_sc, end - j["window"][0].get<double>(), tip.mean, tip.amplitude,
               tip.frequency, lift.mean, lift.amplitude, lift.frequency, lift.frequency / f1_sc, volt.amplitude,
-              j["power_mean"].get<double>(), per_step, cpu, failed ? " (STOPPED)" : "", cs.out().c_str());
-  if (failed) {
-    std::fprintf(stderr, "turek_hron: %s\n", reason.c_str());
-    return 1;
-  }
-  return rc;
+              j["power_mean"].get<double>(), per_step, cpu, loop.failed ? " (STOPPED)" : "", cs.out().c_str());
+  return loop.exit_code(rc);
 }
 
 }  // namespace polymech::apps
