@@ -70,35 +70,24 @@ inline QuadMesh make_harvester_channel(int level, const HarvesterGeometry& g, co
   const std::vector<double> lower = reversed_planes(graded_planes(nh, 1.5)), upper = graded_planes(nh, 1.5);
   const std::vector<double> one = uniform_planes(1), face = uniform_planes(nc);
   MeshBuilder mb(x3);
-  auto box = [&](double xa, double xb, double ya, double yb, const std::vector<double>& sp, const std::vector<double>& tp, unsigned tb,
-                 unsigned tt, unsigned tl, unsigned tr) {
-    Block b;
-    b.bottom = segment({xa, ya}, {xb, ya}, tb);
-    b.top = segment({xa, yb}, {xb, yb}, tt);
-    b.left = segment({xa, ya}, {xa, yb}, tl);
-    b.right = segment({xb, ya}, {xb, yb}, tr);
-    b.s_planes = sp;
-    b.t_planes = tp;
-    mb.add(b);
-  };
   // upstream column: below, the front face, above
-  box(0, x0, 0, y1, up, below, kWall, 0, kInflow, 0);
-  box(0, x0, y1, y4, up, face, 0, 0, kInflow, kObstacle);
-  box(0, x0, y4, H, up, above, 0, kWall, kInflow, 0);
+  mb.add(rect_block(0, x0, 0, y1, up, below, kWall, 0, kInflow, 0));
+  mb.add(rect_block(0, x0, y1, y4, up, face, 0, 0, kInflow, kObstacle));
+  mb.add(rect_block(0, x0, y4, H, up, above, 0, kWall, kInflow, 0));
   // the cylinder's column: below and above it
-  box(x0, x1, 0, y1, cyl, below, kWall, kObstacle, 0, 0);
-  box(x0, x1, y4, H, cyl, above, kObstacle, kWall, 0, 0);
+  mb.add(rect_block(x0, x1, 0, y1, cyl, below, kWall, kObstacle, 0, 0));
+  mb.add(rect_block(x0, x1, y4, H, cyl, above, kObstacle, kWall, 0, 0));
   // the plate's column: below, the lower half (plate on top, cylinder on the left), the upper half, above
-  box(x1, x2, 0, y1, plate, below, kWall, 0, 0, 0);
-  box(x1, x2, y1, y2, plate, lower, 0, kObstacle, kObstacle, 0);
-  box(x1, x2, y3, y4, plate, upper, kObstacle, 0, kObstacle, 0);
-  box(x1, x2, y4, H, plate, above, 0, kWall, 0, 0);
+  mb.add(rect_block(x1, x2, 0, y1, plate, below, kWall, 0, 0, 0));
+  mb.add(rect_block(x1, x2, y1, y2, plate, lower, 0, kObstacle, kObstacle, 0));
+  mb.add(rect_block(x1, x2, y3, y4, plate, upper, kObstacle, 0, kObstacle, 0));
+  mb.add(rect_block(x1, x2, y4, H, plate, above, 0, kWall, 0, 0));
   // the wake, the tip face on the plate row's left edge
-  box(x2, x3, 0, y1, wake, below, kWall, 0, 0, kOutflow);
-  box(x2, x3, y1, y2, wake, lower, 0, 0, 0, kOutflow);
-  box(x2, x3, y2, y3, wake, one, 0, 0, kObstacle, kOutflow);
-  box(x2, x3, y3, y4, wake, upper, 0, 0, 0, kOutflow);
-  box(x2, x3, y4, H, wake, above, 0, kWall, 0, kOutflow);
+  mb.add(rect_block(x2, x3, 0, y1, wake, below, kWall, 0, 0, kOutflow));
+  mb.add(rect_block(x2, x3, y1, y2, wake, lower, 0, 0, 0, kOutflow));
+  mb.add(rect_block(x2, x3, y2, y3, wake, one, 0, 0, kObstacle, kOutflow));
+  mb.add(rect_block(x2, x3, y3, y4, wake, upper, 0, 0, 0, kOutflow));
+  mb.add(rect_block(x2, x3, y4, H, wake, above, 0, kWall, 0, kOutflow));
   return mb.take();
 }
 

@@ -83,6 +83,20 @@ struct Block {
   std::vector<double> s_planes, t_planes;
 };
 
+// The axis-parallel block [xa, xb] x [ya, yb]: s along x (s_planes), t along y (t_planes), its sides tagged (bottom,
+// top, left, right: BoundaryTag bits, 0 inside); the rectangular blocks of the channel meshes.
+inline Block rect_block(double xa, double xb, double ya, double yb, const std::vector<double>& s_planes,
+                        const std::vector<double>& t_planes, unsigned bottom, unsigned top, unsigned left, unsigned right) {
+  Block b;
+  b.bottom = segment({xa, ya}, {xb, ya}, bottom);
+  b.top = segment({xa, yb}, {xb, yb}, top);
+  b.left = segment({xa, ya}, {xa, yb}, left);
+  b.right = segment({xb, ya}, {xb, yb}, right);
+  b.s_planes = s_planes;
+  b.t_planes = t_planes;
+  return b;
+}
+
 inline std::vector<double> uniform_planes(int n) {
   std::vector<double> p(static_cast<std::size_t>(n) + 1);
   for (int k = 0; k <= n; ++k) p[static_cast<std::size_t>(k)] = static_cast<double>(k) / n;
@@ -226,15 +240,8 @@ class MeshBuilder {
 // that fraction of a cell (a curvilinear mesh; the isoparametric map is then not affine).
 inline QuadMesh make_rectangle(double x0, double y0, double lx, double ly, int nx, int ny, double distortion = 0.0) {
   if (nx < 1 || ny < 1 || !(lx > 0) || !(ly > 0)) throw std::invalid_argument("flow rectangle: need nx, ny >= 1 and positive sides");
-  Block b;
-  b.bottom = segment({x0, y0}, {x0 + lx, y0}, kWall);
-  b.top = segment({x0, y0 + ly}, {x0 + lx, y0 + ly}, kWall);
-  b.left = segment({x0, y0}, {x0, y0 + ly}, kInflow);
-  b.right = segment({x0 + lx, y0}, {x0 + lx, y0 + ly}, kOutflow);
-  b.s_planes = uniform_planes(nx);
-  b.t_planes = uniform_planes(ny);
   MeshBuilder mb(std::max(lx, ly));
-  mb.add(b);
+  mb.add(rect_block(x0, x0 + lx, y0, y0 + ly, uniform_planes(nx), uniform_planes(ny), kWall, kWall, kInflow, kOutflow));
   QuadMesh m = mb.take();
   if (distortion > 0.0) {
     const double pi = 3.14159265358979323846, hx = lx / nx, hy = ly / ny;
@@ -297,16 +304,7 @@ inline QuadMesh make_turek_hron_channel(int level, const TurekHronGeometry& g = 
   const double r = g.radius;
   MeshBuilder mb(L);
   auto box = [&](double xa, double xb, double ya, double yb, const std::vector<double>& sp, int nt, unsigned tb, unsigned tt,
-                 unsigned tl, unsigned tr) {
-    Block b;
-    b.bottom = segment({xa, ya}, {xb, ya}, tb);
-    b.top = segment({xa, yb}, {xb, yb}, tt);
-    b.left = segment({xa, ya}, {xa, yb}, tl);
-    b.right = segment({xb, ya}, {xb, yb}, tr);
-    b.s_planes = sp;
-    b.t_planes = uniform_planes(nt);
-    mb.add(b);
-  };
+                 unsigned tl, unsigned tr) { mb.add(rect_block(xa, xb, ya, yb, sp, uniform_planes(nt), tb, tt, tl, tr)); };
   const std::vector<double> u0 = uniform_planes(nx0), u1 = uniform_planes(nx1), u2 = uniform_planes(nx2);
   const std::vector<double> g3 = geometric_planes(nx3, ((fe - b1) / nx2) / (L - fe));
   // column x in [0, 0.1]
