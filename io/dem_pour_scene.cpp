@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/ranges.hpp"
+#include "solid/tyre_section.hpp"
 
 namespace polymech::io {
 
@@ -72,13 +73,18 @@ void read_tyre(const SceneTable& t, dem::TyreInit& y) {
   y.tread_young = t.real("tread_youngs_modulus", y.tread_young, pl::modulus());
   y.tread_poisson = t.real("tread_poisson_ratio", y.tread_poisson, Range{-1.0, 0.5, true, true});
   y.mass = t.real("mass", y.mass, pl::mass());
-  // the wall's law (models/solid/tyre.hpp): the smeared one (default) or the layered wall
-  y.layered = t.choice("wall", {"smeared", "layered"}, "smeared") == "layered";
+  // the wall's law (models/solid/tyre.hpp): the smeared one (default), the layered wall, or the layered wall with
+  // the steel belt as rebar cords over the crown (TyreSpec::belt_rebar)
+  const std::string wall = t.choice("wall", {"smeared", "layered", "belted_rebar"}, "smeared");
+  y.layered = wall != "smeared";
+  y.belt_rebar = wall == "belted_rebar";
+  // the inner tread arc's transverse radius R_t (0: the section's default, 0.35 m; a flatter crown is larger)
+  y.crown_radius = t.real("crown_radius", y.crown_radius, Range{0.0, 1e3, false, false, "m (0: the default 0.35 m)"});
   // the tyre's steps per DEM step (models/dem/tyre_drive.hpp): 1, one common step (the smaller of the two
   // stable ones); 0, as many as the tyre's stable step needs under the spheres' (subcycling); n, exactly n
   y.substeps = static_cast<int>(t.integer("substeps", y.substeps, 0, 1000));
   if (y.layered && (y.through < 3 || y.through % 2 == 0))
-    t.fail("wall", "is \"layered\", which needs an odd number of cells through the wall >= 3 (cells[2] = " + std::to_string(y.through) +
+    t.fail("wall", "is \"" + wall + "\", which needs an odd number of cells through the wall >= 3 (cells[2] = " + std::to_string(y.through) +
                        "): rubber, the cord layer in the middle, rubber");
   t.finish();
 }
@@ -161,6 +167,18 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   const SceneTable time = root.table("time");
   out.duration = time.real("duration", pl::duration());
   if (wheel) read_wheel(*wheel, p, out.duration, c.wheel);
+  if (tyre && wheel) {  // the tyre's section from the wheel's size and the crown radius (solid::tyre_section)
+    solid::TyreSpec ts;
+    ts.outer_radius = c.wheel.radius;
+    ts.width = c.wheel.width;
+    if (c.tyre.crown_radius > 0) ts.crown_radius = c.tyre.crown_radius;
+    try {
+      (void)solid::tyre_section(ts);
+    } catch (const std::invalid_argument& e) {
+      if (tyre->has("crown_radius")) tyre->fail("crown_radius", "= " + format_number(ts.crown_radius) + " m gives no tyre section: " + e.what());
+      wheel->fail("radius", "and wheel.width give no tyre section: " + std::string(e.what()));
+    }
+  }
   if (p.release_at > 0 && p.release_at >= out.duration)
     bin.fail("release_at", "= " + format_number(p.release_at) + " s is not before time.duration = " + format_number(out.duration) + " s");
   const double dt = time.real("dt", 0.0, Range{0.0, pl::time_step().hi, false, false, "s (0: dt_safety x the limit)"});

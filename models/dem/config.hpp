@@ -58,6 +58,10 @@ struct TyreInit {
   double mass = 37.6;                        // kg: the tyre's own mass (its density follows from its volume)
   bool layered = false;                      // the wall: false, the smeared law; true, rubber / cord layer / rubber
                                              // (solid::TyreSpec::layered; needs an odd `through` >= 3)
+  bool belt_rebar = false;                   // the steel belt over the crown as two +-20 deg cord families in the
+                                             // layer outside the cord layer (solid::TyreSpec::belt_rebar; needs layered)
+  double crown_radius = 0.0;                 // m, the inner tread arc's transverse radius R_t; 0: solid::TyreSpec's
+                                             // default (0.35 m, assumed)
   int substeps = 1;                          // the tyre's steps per DEM step (dem/tyre_drive.hpp): 1, one common step
                                              // (the smaller); 0, as many as the tyre needs under the DEM's; n > 1, n
 };

@@ -81,7 +81,9 @@ class TyreDrive {
     ts.outer_radius = spec.radius;
     ts.width = spec.width;
     ts.mass = tyre.mass;
-    ts.layered = tyre.layered;
+    ts.layered = tyre.layered || tyre.belt_rebar;
+    ts.belted = ts.belt_rebar = tyre.belt_rebar;
+    if (tyre.crown_radius > 0) ts.crown_radius = tyre.crown_radius;
     const solid::TyreLaw law = solid::tyre_equivalent_law(ts);
     solid::Config<3> c;
     c.mesh = solid::make_tyre(ts, tyre.around, tyre.across, tyre.through);

@@ -117,7 +117,8 @@ TEST(DemScenes, ImplausibleValuesAreRefused) {
                {"impact.angles"});
 }
 
-// [tyre] wall = "smeared" | "layered" (issue 37: the layered wall needs an odd cells[2] >= 3).
+// [tyre] wall = "smeared" | "layered" | "belted_rebar" (issue 37: the layered walls need an odd cells[2] >= 3), substeps
+// and crown_radius.
 TEST(DemScenes, TyreWallKey) {
   const char* src = std::getenv("POLYMECH_SOURCE_DIR");
   ASSERT_NE(src, nullptr);
@@ -146,5 +147,18 @@ TEST(DemScenes, TyreWallKey) {
   }
   EXPECT_EQ(io::load_dem_pour_scene(file).config.tyre.substeps, 0);
   EXPECT_EQ(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.substeps, 1);
+  // wall = "belted_rebar" (the layered wall with the steel belt's cords) and crown_radius (0: the section's 0.35 m)
+  const auto rebar_scene = io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_rebar_gravel_coarse.toml");
+  EXPECT_TRUE(rebar_scene.config.tyre.belt_rebar);
+  EXPECT_TRUE(rebar_scene.config.tyre.layered);
+  EXPECT_DOUBLE_EQ(rebar_scene.config.tyre.crown_radius, 1.0);
+  EXPECT_FALSE(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.belt_rebar);
+  EXPECT_EQ(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml").config.tyre.crown_radius, 0.0);
+  const std::string one_cell = replace_once(base, "mass = 37.6", "mass = 37.6\nwall = \"belted_rebar\"");
+  polymech::testing::expect_load_error(one_cell, pour, line_of(one_cell, "wall = \"belted_rebar\""), {"belted_rebar", "odd", "cells[2] = 1"});
+  const std::string sharp = replace_once(base, "mass = 37.6", "mass = 37.6\ncrown_radius = 0.05");
+  polymech::testing::expect_load_error(sharp, pour, line_of(sharp, "crown_radius = 0.05"), {"crown_radius", "tread's half width"});
+  const std::string negative_crown = replace_once(base, "mass = 37.6", "mass = 37.6\ncrown_radius = -1");
+  polymech::testing::expect_load_error(negative_crown, pour, line_of(negative_crown, "crown_radius = -1"), {"crown_radius", "range"});
   fs::remove(file);
 }
