@@ -69,6 +69,13 @@ void read_tyre(const SceneTable& t, dem::TyreInit& y) {
   y.order = static_cast<int>(t.integer("order", y.order, 1, 4));
   y.pressure = t.real("pressure", y.pressure, Range{0.0, 1e8, false, false, "Pa (inflation)"});
   y.inflate_to = t.real("inflate_to", y.inflate_to, Range{1e-6, 1e3, false, false, "s after wheel.start (the inflation's ramp 0 -> pressure)"});
+  if (t.has("deflate")) {  // [t0, t1] s after the set-down: the pressure let down to zero (a flat tyre)
+    const auto d = t.reals("deflate", Range{0.0, 1e3, false, false, "s after wheel.start"});
+    if (d.size() != 2 || !(d[0] >= y.inflate_to) || !(d[1] > d[0]))
+      t.fail("deflate", "must be [t0, t1] with inflate_to = " + format_number(y.inflate_to) +
+                            " s <= t0 < t1 (s after wheel.start: the pressure ramps from full to zero between them)");
+    y.deflate = {d[0], d[1]};
+  }
   y.damping = t.real("damping", y.damping, Range{0.0, 1e6, false, false, "1/s (mass-proportional, relative to the rim's rigid motion)"});
   y.tread_young = t.real("tread_youngs_modulus", y.tread_young, pl::modulus());
   y.tread_poisson = t.real("tread_poisson_ratio", y.tread_poisson, Range{-1.0, 0.5, true, true});

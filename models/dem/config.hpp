@@ -60,6 +60,8 @@ struct TyreInit {
                                              // (solid::TyreSpec::layered; needs an odd `through` >= 3)
   bool belt_rebar = false;                   // the steel belt over the crown as two +-20 deg cord families in the
                                              // layer outside the cord layer (solid::TyreSpec::belt_rebar; needs layered)
+  std::array<double, 2> deflate{};          // s after the set-down: the pressure ramps from full to zero over
+                                             // [deflate[0], deflate[1]] (the hard case of a flat tyre); {0, 0}: never
   double crown_radius = 0.0;                 // m, the inner tread arc's transverse radius R_t; 0: solid::TyreSpec's
                                              // default (0.35 m, assumed)
   int substeps = 1;                          // the tyre's steps per DEM step (dem/tyre_drive.hpp): 1, one common step

@@ -6,7 +6,8 @@
 //
 // Schedule (WheelSpec, times from the set-down at WheelSpec::start): parked far above the bin until then; set
 // down with its lowest point on the highest sphere under it (as the rigid wheel, dem/wheel_drive.hpp); inflated
-// to TyreInit::pressure over [0, inflate_to] (a follower pressure on the inner surface); the rim carries the
+// to TyreInit::pressure over [0, inflate_to] (a follower pressure on the inner surface; with TyreInit::deflate let
+// down to zero over [deflate[0], deflate[1]], the hard case of a flat tyre); the rim carries the
 // vertical load (free height, m z'' = F_z - load), its x velocity and spin are prescribed (speed and slip).
 // The tyre carries no weight of its own (as the rigid wheel: the load is all of it).
 //
@@ -74,6 +75,8 @@ class TyreDrive {
       throw std::invalid_argument("dem: the tyre's rim needs radius > 0, mass > 0 and slip in [0, 1)");
     if (!(tyre.pressure >= 0) || !(tyre.inflate_to > 0) || !(tyre.damping >= 0) || tyre.order < 1 || tyre.order > 4)
       throw std::invalid_argument("dem: the tyre needs pressure >= 0, inflate_to > 0, damping >= 0 and order 1-4");
+    if (tyre.deflate[1] > 0 && !(tyre.deflate[0] >= tyre.inflate_to && tyre.deflate[1] > tyre.deflate[0]))
+      throw std::invalid_argument("dem: the tyre's deflation [t0, t1] needs inflate_to <= t0 < t1");
     if (tyre.substeps < 0 || tyre.substeps > 1000)
       throw std::invalid_argument("dem: the tyre's substeps must be 0 (as its step needs) or 1-1000");
     contact_scale_ = std::make_shared<double>(1.0);
@@ -107,8 +110,13 @@ class TyreDrive {
     o.fibre_stiffness = solid::tyre_fibre_stiffness(ts, tyre.around, tyre.across, tyre.through);  // empty unless belt_rebar
     o.fibre_angle_deg = ts.belt_angle_deg;
     o.fibre_tension_only = ts.belt_tension_only;
-    const double ramp = tyre.inflate_to;
-    o.load_factor = [ramp](double t) { return t < ramp ? t / ramp : 1.0; };
+    // the pressure's factor: up over [0, inflate_to], then (deflate[1] > 0) down to zero over [deflate[0], deflate[1]]
+    const double ramp = tyre.inflate_to, d0 = tyre.deflate[0], d1 = tyre.deflate[1];
+    o.load_factor = [ramp, d0, d1](double t) {
+      if (t < ramp) return t / ramp;
+      if (!(d1 > 0) || t <= d0) return 1.0;
+      return t < d1 ? (d1 - t) / (d1 - d0) : 0.0;
+    };
     solid_ = std::make_shared<Solid>(c, solid::HyperelasticLaw(law.law), o, std::vector<solid::FollowerPressure>{{"zmin", tyre.pressure}},
                                      std::vector<solid::RigidTie<3>>{rim});
     rim_reference_ = solid_->ties()[0].position;

@@ -160,5 +160,13 @@ TEST(DemScenes, TyreWallKey) {
   polymech::testing::expect_load_error(sharp, pour, line_of(sharp, "crown_radius = 0.05"), {"crown_radius", "tread's half width"});
   const std::string negative_crown = replace_once(base, "mass = 37.6", "mass = 37.6\ncrown_radius = -1");
   polymech::testing::expect_load_error(negative_crown, pour, line_of(negative_crown, "crown_radius = -1"), {"crown_radius", "range"});
+  // deflate = [t0, t1] (a flat tyre): after the inflation, t0 < t1
+  const std::string early = replace_once(base, "mass = 37.6", "mass = 37.6\ndeflate = [0.005, 0.05]");
+  polymech::testing::expect_load_error(early, pour, line_of(early, "deflate = [0.005, 0.05]"), {"deflate", "inflate_to", "t0 < t1"});
+  {
+    std::ofstream out(file);
+    out << replace_once(base, "mass = 37.6", "mass = 37.6\ndeflate = [0.1, 0.15]");
+  }
+  EXPECT_EQ(io::load_dem_pour_scene(file).config.tyre.deflate[1], 0.15);
   fs::remove(file);
 }

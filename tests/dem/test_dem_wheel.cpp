@@ -5,9 +5,11 @@
 // pressed into an elastic FE block (dem/hertz_block.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
+#include "common/host_copy.hpp"
 #include "dem/dem.hpp"
 #include "dem/hertz_block.hpp"
 #include "dem/layer_cases.hpp"
@@ -188,6 +190,55 @@ TEST(Tyre, StandingOnALayerItCarriesTheLoadWithoutTunnelling) { stands_on_a_laye
 // Subcycled (three tyre steps per DEM step, dem/tyre_drive.hpp: the contact force as the DEM step's two
 // half-kicks, r-RESPA): the same balance to round-off, the same load carried, no tunnelling.
 TEST(Tyre, SubcycledItKeepsTheMomentumBalance) { stands_on_a_layer(3); }
+
+// The flat tyre (issue 37's hard case "deflation to zero pressure, bounded"): standing on the layer at full load,
+// the pressure let down to zero over 30 ms. The tyre sags onto the layer (its sidewalls carry the load in bending
+// now) and the run stays bounded: every value finite, the rim settles above the layer by less than the section's
+// height, the load is carried, no sphere leaves the layer.
+TEST(Tyre, DeflatedUnderFullLoadItStaysBounded) {
+  dm::Config c = tyre_on_a_layer(0.0, 0.100);
+  c.tyre.deflate = {0.130, 0.160};
+  dm::Dem<double> m(c);
+  const auto steps = [&](double t) { return static_cast<std::int64_t>(std::llround(t / m.dt())); };
+  const auto finite = [&] {
+    const auto u = pm::models::to_host(m.tyre().solid().displacement());
+    for (std::size_t k = 0; k < u.size(); ++k)
+      if (!std::isfinite(u[k])) return false;
+    const auto w = m.wheel();
+    return std::isfinite(w.centre[2]) && std::isfinite(w.vertical_force) && std::isfinite(w.sinkage);
+  };
+  // inflated and loaded: the mean rim sinkage over 110-130 ms (the rim still bounces)
+  pm::models::run(m, steps(0.110));
+  const int n = 40;
+  double inflated = 0.0;
+  for (int k = 0; k < n; ++k) pm::models::run(m, steps(0.020) / n), inflated += m.wheel().sinkage / n;
+  // let down over 130-160 ms, then held flat: the means over 210-260 ms (about one bounce)
+  double ke_max = 0.0;
+  for (int k = 0; k < 4 * n; ++k) {
+    pm::models::run(m, steps(0.080) / (4 * n));
+    ke_max = std::max(ke_max, m.tyre().solid().kinetic_energy());
+  }
+  ASSERT_TRUE(finite());
+  double flat = 0.0, fz = 0.0, rim_low = 1e300;
+  for (int k = 0; k < n; ++k) {
+    pm::models::run(m, steps(0.050) / n);
+    const auto w = m.wheel();
+    flat += w.sinkage / n;
+    fz += w.vertical_force / n;
+    rim_low = std::min(rim_low, w.centre[2] - 0.2096);  // the rim's flange radius (16.5 in / 2)
+    ke_max = std::max(ke_max, m.tyre().solid().kinetic_energy());
+  }
+  const auto w = m.wheel();
+  std::printf("flat tyre on a layer: rim sinkage %.2f mm inflated, %.2f mm at zero pressure; mean vertical force %.1f N "
+              "(load 10163); the rim's lowest point %.1f mm above the layer's top; kinetic energy at most %.3g J after the load\n",
+              1e3 * inflated, 1e3 * flat, fz, 1e3 * (rim_low - w.bed_level), ke_max);
+  ASSERT_TRUE(finite());
+  EXPECT_GT(flat, inflated + 1e-3);                  // it sags: 19.7 -> 28.5 mm here (the smeared wall carries the rest)
+  EXPECT_GT(rim_low - w.bed_level, 0.1);             // bounded: the rim stays well above the gravel (0.21 m here)
+  EXPECT_NEAR(fz, 10163.0, 0.15 * 10163.0);          // the flat tyre still carries the load (+-1 kN bounce here)
+  EXPECT_LT(ke_max, 50.0);                           // no blow-up: below the load's work over 5 mm
+  for (pm::Index i = 0; i < m.sphere_count(); ++i) ASSERT_LT(m.sphere(i).x[2], 0.03) << "sphere " << i << " left the layer";
+}
 
 // Driven (0.5 m/s, 20 % slip) and restarted mid-drive from a checkpoint: the tyre (its displacement, velocity,
 // acceleration, rim and clock) is part of it, so the run continues bit for bit; the rim follows the schedule.
