@@ -20,6 +20,7 @@
 #include "dem/analysis.hpp"
 #include "io/dem_pour_scene.hpp"
 #include "io/lammps_data.hpp"
+#include "solid/tyre_section.hpp"
 
 namespace pm = polymech;
 namespace dm = polymech::dem;
@@ -41,6 +42,10 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                static_cast<long long>(spheres), scene.pour.radius_min, scene.pour.radius_max, scene.pour.bin[0], scene.pour.bin[1],
                scene.pour.bin[2], model.dt(), model.limit().describe().c_str(), static_cast<long long>(steps), steps * model.dt(),
                pm::apps::thread_count().c_str());
+  if (c.effects.has("fe_tyre"))  // the tyre's own step: it sets the common step or is subcycled under the spheres'
+    std::fprintf(stderr, "  tyre: %lld DoFs, its step %.4g s (critical %.4g s), %d per DEM step\n",
+                 static_cast<long long>(model.tyre().solid().dof_count()), model.tyre().solid().time_step(),
+                 model.tyre().solid().critical_time_step(), model.tyre().substeps());
 
   // snapshots: displacement from the start, velocity, radius and the clump each sphere belongs to
   auto layout = dm::sphere_layout(model, c);
@@ -103,7 +108,9 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                   {"time_driven", w.time}};
     if (c.effects.has("fe_tyre"))  // the deformable tyre (issue 37): its lattice and inflation; the wheel's facets are its surface's
       j["tyre"] = {{"cells", {c.tyre.around, c.tyre.across, c.tyre.through}}, {"order", c.tyre.order}, {"pressure", c.tyre.pressure},
-                   {"wall", c.tyre.layered ? "layered" : "smeared"}, {"substeps", model.tyre().substeps()},
+                   {"wall", c.tyre.belt_rebar ? "belted_rebar" : c.tyre.layered ? "layered" : "smeared"},
+                   {"crown_radius", c.tyre.crown_radius > 0 ? c.tyre.crown_radius : polymech::solid::TyreSpec{}.crown_radius},
+                   {"deflate", {c.tyre.deflate[0], c.tyre.deflate[1]}}, {"substeps", model.tyre().substeps()},
                    {"time_step", model.tyre().solid().time_step()},
                    {"dofs", model.tyre().solid().dof_count()}, {"critical_step", model.tyre().solid().critical_time_step()},
                    {"surface_facets", model.surface().facet_count()}, {"damping", c.tyre.damping}};
