@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "io/ranges.hpp"
-#include "solid/tyre_section.hpp"
+#include "dem/tyre_spec.hpp"
 
 namespace polymech::io {
 
@@ -175,10 +175,7 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   out.duration = time.real("duration", pl::duration());
   if (wheel) read_wheel(*wheel, p, out.duration, c.wheel);
   if (tyre && wheel) {  // the tyre's section from the wheel's size and the crown radius (solid::tyre_section)
-    solid::TyreSpec ts;
-    ts.outer_radius = c.wheel.radius;
-    ts.width = c.wheel.width;
-    if (c.tyre.crown_radius > 0) ts.crown_radius = c.tyre.crown_radius;
+    const solid::TyreSpec ts = dem::tyre_spec(c.wheel, c.tyre);
     try {
       (void)solid::tyre_section(ts);
     } catch (const std::invalid_argument& e) {

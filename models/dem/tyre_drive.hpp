@@ -46,6 +46,7 @@
 #include "contact/surface_mesh.hpp"
 #include "dem/config.hpp"
 #include "dem/surface_loads.hpp"
+#include "dem/tyre_spec.hpp"
 #include "dem/wheel_drive.hpp"
 #include "solid/finite_strain_explicit.hpp"
 #include "solid/tyre.hpp"
@@ -80,13 +81,7 @@ class TyreDrive {
     if (tyre.substeps < 0 || tyre.substeps > 1000)
       throw std::invalid_argument("dem: the tyre's substeps must be 0 (as its step needs) or 1-1000");
     contact_scale_ = std::make_shared<double>(1.0);
-    solid::TyreSpec ts;
-    ts.outer_radius = spec.radius;
-    ts.width = spec.width;
-    ts.mass = tyre.mass;
-    ts.layered = tyre.layered || tyre.belt_rebar;
-    ts.belted = ts.belt_rebar = tyre.belt_rebar;
-    if (tyre.crown_radius > 0) ts.crown_radius = tyre.crown_radius;
+    const solid::TyreSpec ts = tyre_spec(spec, tyre);
     const solid::TyreLaw law = solid::tyre_equivalent_law(ts);
     solid::Config<3> c;
     c.mesh = solid::make_tyre(ts, tyre.around, tyre.across, tyre.through);
