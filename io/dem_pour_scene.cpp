@@ -26,6 +26,7 @@ void read_wheel(const SceneTable& t, const dem::PourSpec& p, double duration, de
   w.side_depth = t.real("side_depth", 0.25 * w.radius, Range{0.0, 100.0, false, false, "m (the side walls' depth below the tread)"});
   if (w.side_depth >= w.radius) t.fail("side_depth", "must be smaller than radius = " + format_number(w.radius) + " m");
   w.mass = t.real("mass", pl::mass());
+  w.damping = t.real("damping", 0.0, Range{0.0, 1e8, false, false, "N s/m (a damper on the rim's vertical velocity, reacted by the carriage; 0: none)"});
   w.load = t.real("load", Range{0.0, 1e9, false, false, "N (the vertical load, downwards)"});
   const auto ramp = [&t](const std::string& key, double& from, double& to) {
     const auto r = t.reals(key, Range{0.0, 1e3, false, false, "s after wheel.start"});

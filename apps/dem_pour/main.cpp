@@ -102,7 +102,7 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
     j["driving_torque"] = mean(means.torque);
     j["steady_stage_from"] = means.from;
     j["paper_sinkage_mm"] = 53.6;
-    j["wheel"] = {{"radius", c.wheel.radius}, {"width", c.wheel.width}, {"mass", c.wheel.mass}, {"load", c.wheel.load},
+    j["wheel"] = {{"radius", c.wheel.radius}, {"width", c.wheel.width}, {"mass", c.wheel.mass}, {"load", c.wheel.load}, {"damping", c.wheel.damping},
                   {"speed", c.wheel.speed}, {"slip", c.wheel.slip}, {"start", c.wheel.start}, {"facets_around", c.wheel.around},
                   {"facets_across", c.wheel.across}, {"bed_level", w.bed_level}, {"travel", w.centre[0] - c.wheel.x_start},
                   {"time_driven", w.time}};

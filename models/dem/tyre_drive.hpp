@@ -72,8 +72,8 @@ class TyreDrive {
   // stepped at dt (0: 0.9 x its critical step). Throws std::invalid_argument for a bad spec or a step above the
   // tyre's stable one.
   TyreDrive(const WheelSpec& spec, const TyreInit& tyre, double dt) : spec_(spec), init_(tyre) {
-    if (!spec.enabled() || !(spec.mass > 0) || !(spec.slip >= 0 && spec.slip < 1))
-      throw std::invalid_argument("dem: the tyre's rim needs radius > 0, mass > 0 and slip in [0, 1)");
+    if (!spec.enabled() || !(spec.mass > 0) || !(spec.slip >= 0 && spec.slip < 1) || !(spec.damping >= 0))
+      throw std::invalid_argument("dem: the tyre's rim needs radius > 0, mass > 0, slip in [0, 1) and damping >= 0");
     if (!(tyre.pressure >= 0) || !(tyre.inflate_to > 0) || !(tyre.damping >= 0) || tyre.order < 1 || tyre.order > 4)
       throw std::invalid_argument("dem: the tyre needs pressure >= 0, inflate_to > 0, damping >= 0 and order 1-4");
     if (tyre.deflate[1] > 0 && !(tyre.deflate[0] >= tyre.inflate_to && tyre.deflate[1] > tyre.deflate[0]))
@@ -96,6 +96,7 @@ class TyreDrive {
     rim.velocity[1] = [](double) { return 0.0; };
     rim.velocity[3] = [w](double t) { return w.spin_at(t); };
     rim.load[2] = [w](double t) { return -w.load_at(t); };
+    rim.damping[2] = spec.damping;  // the carriage's vertical damper (WheelSpec::damping; 0: none)
     solid::ExplicitFiniteStrainOptions o;
     o.density = law.density;
     o.dt = dt;

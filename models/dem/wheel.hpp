@@ -7,6 +7,7 @@
 //   vertical load  F(t) = load * ramp(t; load_from, load_to)       10 163 N over 10-12 ms
 //   speed          v(t) = speed * ramp(t; speed_from, speed_to)     over 12-15 ms
 //   spin           omega(t) = v(t) / ((1 - slip) R)                 slip s = 1 - v / (omega R) = 20 %
+//   vertical damper  F_d = -damping * z'                            none by default (WheelSpec::damping)
 // The paper's step a) (inflation over 0-10 ms) belongs to the deformable tyre; a rigid wheel just
 // waits on the bed during it, unloaded. The wheel runs along +x, its axis along y; a positive spin
 // about +y rolls it forward, so with slip > 0 the tread pushes the gravel backwards (a driven wheel).
@@ -26,6 +27,8 @@ struct WheelSpec {
   int across = 0;              // facets across the width
   double side_depth = 0.0;     // the side walls: annuli from R down to R - side_depth (keep gravel out)
   double mass = 0.0;           // of the wheel's vertical motion (kg)
+  double damping = 0.0;        // N s/m: a dashpot on the rim's vertical velocity, reacted by the carriage (a test
+                               // rig's or a suspension's damper; issue 37); 0: none, the paper's reading
   double load = 0.0;           // vertical load (N), downwards
   double load_from = 0.0, load_to = 0.0;    // its ramp (s after start)
   double speed = 0.0;          // forward speed (m/s)

@@ -83,8 +83,8 @@ class WheelDrive {
   // The wheel of `spec` carrying `mesh` (its nodes relative to the centre, as the scene gives them),
   // parked at spec.parked, over `spheres` spheres. Throws std::invalid_argument for a bad spec.
   WheelDrive(const WheelSpec& spec, const contact::SurfaceMesh<T>& mesh, Index spheres) : spec_(spec) {
-    if (!spec.enabled() || !(spec.mass > 0) || !(spec.slip >= 0 && spec.slip < 1))
-      throw std::invalid_argument("dem: the wheel needs radius > 0, mass > 0 and slip in [0, 1)");
+    if (!spec.enabled() || !(spec.mass > 0) || !(spec.slip >= 0 && spec.slip < 1) || !(spec.damping >= 0))
+      throw std::invalid_argument("dem: the wheel needs radius > 0, mass > 0, slip in [0, 1) and damping >= 0");
     body_ = decltype(body_)("polymech::dem::wheel", 1);
     placement_ = decltype(placement_)("polymech::dem::wheel_info", 1);
     auto& b = body_(0);
@@ -153,7 +153,7 @@ class WheelDrive {
       b.force[k] = contact_[static_cast<std::size_t>(k)];
       b.torque[k] = contact_[static_cast<std::size_t>(3 + k)];
     }
-    b.force[2] -= load;
+    b.force[2] -= load + spec_.damping * b.velocity[2];  // the damper on the half-step velocity (WheelSpec::damping)
   }
   // The second half of the step: the kick of its height, m z'' = F_z (gravel + load).
   void second_half(double dt) {

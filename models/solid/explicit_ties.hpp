@@ -113,7 +113,10 @@ inline void HyperelasticExplicit<T, D>::body_force(std::size_t k, double t) {
   }
   for (int q = 0; q <= D; ++q) {
     const auto& l = ties_[k].load[static_cast<std::size_t>(q)];
-    if (l && !ties_[k].velocity[static_cast<std::size_t>(q)]) F[static_cast<std::size_t>(q)] += l(t);
+    if (ties_[k].velocity[static_cast<std::size_t>(q)]) continue;  // prescribed
+    if (l) F[static_cast<std::size_t>(q)] += l(t);
+    const double c = ties_[k].damping[static_cast<std::size_t>(q)];
+    if (c > 0.0) F[static_cast<std::size_t>(q)] -= c * (q < D ? s.velocity[static_cast<std::size_t>(q)] : s.omega);
   }
   if (static_cast<int>(k) == o_.damping_frame && o_.damping > 0.0)  // the dashpots' reaction (frame_damping)
     for (int q = 0; q <= D; ++q) F[static_cast<std::size_t>(q)] += frame_force_[q];

@@ -34,6 +34,9 @@ struct RigidTie {
   std::array<std::function<double(double)>, D + 1> velocity;
   // Per free body DoF: the applied force (torque) as a function of time; empty: none.
   std::array<std::function<double(double)>, D + 1> load;
+  // Per free body DoF: a dashpot to the ground, -damping x the DoF's half-step velocity (N s/m; N m s about the
+  // axis); 0: none (the tyre's rim: the carriage's vertical damper, dem::WheelSpec::damping).
+  std::array<double, D + 1> damping{};
 };
 
 // The body's state (host): the reference point, the rotation, their rates, the forces of the last evaluation.

@@ -117,6 +117,28 @@ TEST(DemScenes, ImplausibleValuesAreRefused) {
                {"impact.angles"});
 }
 
+// [wheel] damping: the carriage's vertical damper (N s/m, >= 0; 0 by default: the paper's reading).
+TEST(DemScenes, WheelDampingKey) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  const fs::path scene = fs::path(src) / "scenes" / "dem" / "tyre_gravel_coarse.toml";
+  std::ifstream in(scene);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string base = text.str();
+  const auto pour = [](const fs::path& p) { io::load_dem_pour_scene(p); };
+  const std::string negative = replace_once(base, "load = 10163.0", "load = 10163.0\ndamping = -1");
+  polymech::testing::expect_load_error(negative, pour, line_of(negative, "damping = -1"), {"wheel.damping", "N s/m"});
+  EXPECT_EQ(io::load_dem_pour_scene(scene).config.wheel.damping, 0.0);
+  const fs::path file = fs::temp_directory_path() / "polymech_test_wheel_damping.toml";
+  {
+    std::ofstream out(file);
+    out << replace_once(base, "load = 10163.0", "load = 10163.0\ndamping = 5000.0");
+  }
+  EXPECT_EQ(io::load_dem_pour_scene(file).config.wheel.damping, 5000.0);
+  fs::remove(file);
+}
+
 // [tyre] wall = "smeared" | "layered" | "belted_rebar" (issue 37: the layered walls need an odd cells[2] >= 3), substeps
 // and crown_radius.
 TEST(DemScenes, TyreWallKey) {

@@ -240,6 +240,47 @@ TEST(Tyre, DeflatedUnderFullLoadItStaysBounded) {
   for (pm::Index i = 0; i < m.sphere_count(); ++i) ASSERT_LT(m.sphere(i).x[2], 0.03) << "sphere " << i << " left the layer";
 }
 
+// The carriage's vertical damper (WheelSpec::damping, issue 37): the tyre on the layer loaded at the paper's rate
+// (the load over 2 ms: the rim bounces on the tyre, its vertical force swinging far above and below the load) with
+// and without a dashpot of 5 kN s/m on the rim's vertical velocity (about half the critical damping of the rim's
+// 48 kg on the tyre's spring, period about 60 ms). Damped, the force's swing over 60-100 ms is less than half the
+// undamped one's, and the load is still carried (the damper's mean force tends to zero as the rim comes to rest).
+// The same for the rigid wheel (1 kg on the spheres' springs, period about 28 ms; 200 N s/m, about half critical).
+namespace {
+double vertical_swing(const dm::Config& c, double& mean) {
+  dm::Dem<double> m(c);
+  const auto steps = [&](double t) { return static_cast<std::int64_t>(std::llround(t / m.dt())); };
+  pm::models::run(m, steps(0.060));
+  double lo = 1e300, hi = -1e300;
+  mean = 0.0;
+  const int n = 80;
+  for (int k = 0; k < n; ++k) {
+    pm::models::run(m, steps(0.040) / n);
+    const double f = m.wheel().vertical_force;
+    lo = std::min(lo, f), hi = std::max(hi, f), mean += f / n;
+  }
+  return hi - lo;
+}
+}  // namespace
+
+TEST(Tyre, ACarriageDamperDampsTheRimsBounce) {
+  for (const bool tyre : {true, false}) {
+    dm::Config c = tyre ? tyre_on_a_layer(0.0, 0.007) : wheel_on_a_layer(0.0);
+    const double load = c.wheel.load, damping = tyre ? 5000.0 : 200.0;
+    double free_mean = 0.0, damped_mean = 0.0;
+    const double free = vertical_swing(c, free_mean);
+    c.wheel.damping = damping;
+    const double damped = vertical_swing(c, damped_mean);
+    std::printf("%s: the rim's bounce over 60-100 ms: vertical force swing %.4g N without a damper (mean %.4g N), %.4g N "
+                "with %.0f N s/m (mean %.4g N); load %.4g N\n",
+                tyre ? "tyre" : "rigid wheel", free, free_mean, damped, damping, damped_mean, load);
+    EXPECT_LT(damped, 0.5 * free);
+    EXPECT_NEAR(damped_mean, load, 0.15 * load);
+    c.wheel.damping = -1.0;
+    EXPECT_THROW(dm::Dem<double>{c}, std::invalid_argument);
+  }
+}
+
 // The energy balance of the coupling (issue 37: "momentum and energy balance of the coupled system"): a steel
 // sphere (R 30 mm) fired upwards at 2 m/s into the tread of the uninflated, undamped tyre (tyre_on_a_layer's
 // coarse lattice), without gravity, friction or contact damping, the rim free vertically and unloaded. Everything
