@@ -247,6 +247,10 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
     out.cost.seconds += (out.duration - c.wheel.start) / dem_dt * per_dem * dofs / 3.6e6;
     out.cost.bytes += dofs * 60.0 * 8.0;
     out.cost.rate += "; the tyre's " + format_number(dofs) + " DoFs at 3.6e6 DoF-steps/s after the set-down";
+    // the rim steps with the tyre (its estimated step; the model checks the exact one)
+    if (const auto bad = c.wheel.damping_problem(dem_dt / per_dem); !bad.empty()) wheel->fail("damping", bad);
+  } else if (wheel) {
+    if (const auto bad = c.wheel.damping_problem(c.dt); !bad.empty()) wheel->fail("damping", bad);
   }
   out.cost.size_keys = {"gravel.count = " + std::to_string(count) + " (" + std::to_string(p.count) + " at accuracy '" +
                             out.header.accuracy + "')",

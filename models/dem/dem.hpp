@@ -100,11 +100,14 @@ class Dem {
       } else {
         tyre_drive_.subcycle(cfg_.dt, cfg_.tyre.substeps);
       }
+      if (const auto bad = cfg_.wheel.damping_problem(tyre_drive_.solid().time_step()); !bad.empty())
+        throw std::invalid_argument("dem: the wheel's damping " + bad);
       cfg_.surface = tyre_drive_.surface();
     }
     if (surfaces_) allocate_surface();
     if (wheel_) {
       if (!surfaces_) throw std::invalid_argument("dem: effect rigid_wheel needs fe_surfaces (the wheel's mesh)");
+      if (const auto bad = cfg_.wheel.damping_problem(cfg_.dt); !bad.empty()) throw std::invalid_argument("dem: the wheel's damping " + bad);
       wheel_drive_ = WheelDrive<T>(cfg_.wheel, mesh_, s_.size());
     }
     register_state();

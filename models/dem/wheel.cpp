@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -25,6 +26,16 @@ double ramp(double t, double from, double to) {
 double WheelSpec::load_at(double t) const { return load * ramp(t, load_from, load_to); }
 double WheelSpec::speed_at(double t) const { return speed * ramp(t, speed_from, speed_to); }
 double WheelSpec::spin_at(double t) const { return speed_at(t) / ((1.0 - slip) * radius); }
+
+std::string WheelSpec::damping_problem(double step) const {
+  if (!(damping > 0) || !(step > 0) || damping * step < mass) return {};
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "= %.6g N s/m is too strong for the explicit damper: with the rim's mass %.6g kg and its step %.6g s, "
+                "damping x dt / mass = %.3g, which must stay below 1 (damping < %.6g N s/m)",
+                damping, mass, step, damping * step / mass, mass / step);
+  return text;
+}
 
 SurfaceInit wheel_surface(const WheelSpec& w) {
   if (!(w.radius > 0) || !(w.width > 0)) throw std::invalid_argument("wheel: radius and width must be > 0");

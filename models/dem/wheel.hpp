@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace polymech::dem {
@@ -42,6 +43,10 @@ struct WheelSpec {
   double load_at(double t_from_start) const;   // F(t) (N), 0 before the ramp
   double speed_at(double t_from_start) const;  // v(t)
   double spin_at(double t_from_start) const;   // omega(t) about +y
+  // The damper is explicit (on the half-step velocity): per step of `step` seconds it scales the rim's vertical
+  // velocity by 1 - damping step / mass, so it must stay below 1 (at 1 it stops the rim in one step, above it
+  // reverses it, and at 2 it diverges). Empty when damping < mass / step, else what is wrong, the limit named.
+  std::string damping_problem(double step) const;
 };
 
 // The wheel's surface, nodes relative to its centre (axis along y): the tread, `around` x `across`

@@ -137,6 +137,15 @@ TEST(DemScenes, WheelDampingKey) {
   }
   EXPECT_EQ(io::load_dem_pour_scene(file).config.wheel.damping, 5000.0);
   fs::remove(file);
+  // the explicit damper's limit, damping x dt / mass < 1 (dem::WheelSpec::damping_problem): the tyre's rim (62.4 kg,
+  // stepped at the tyre's ~2e-6 s) and the rigid wheel (100 kg at the spheres' step) refuse 1e8 N s/m by file:line:key
+  const std::string strong = replace_once(base, "load = 10163.0", "load = 10163.0\ndamping = 1e8");
+  polymech::testing::expect_load_error(strong, pour, line_of(strong, "damping = 1e8"), {"wheel.damping", "explicit damper", "below 1"});
+  std::ifstream rigid_in(fs::path(src) / "scenes" / "dem" / "wheel_gravel_coarse.toml");
+  std::stringstream rigid_text;
+  rigid_text << rigid_in.rdbuf();
+  const std::string rigid = replace_once(rigid_text.str(), "load = 10163.0", "load = 10163.0\ndamping = 1e8");
+  polymech::testing::expect_load_error(rigid, pour, line_of(rigid, "damping = 1e8"), {"wheel.damping", "explicit damper", "mass 100 kg"});
 }
 
 // [tyre] wall = "smeared" | "layered" | "belted_rebar" (issue 37: the layered walls need an odd cells[2] >= 3), substeps

@@ -278,6 +278,9 @@ TEST(Tyre, ACarriageDamperDampsTheRimsBounce) {
     EXPECT_NEAR(damped_mean, load, 0.15 * load);
     c.wheel.damping = -1.0;
     EXPECT_THROW(dm::Dem<double>{c}, std::invalid_argument);
+    // the explicit damper's limit (WheelSpec::damping_problem): damping x dt / mass < 1 at the rim's own step
+    c.wheel.damping = 1e8;
+    EXPECT_THROW(dm::Dem<double>{c}, std::invalid_argument);
   }
 }
 
