@@ -96,7 +96,7 @@ KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindl
 // Cost (the DEM step's hottest function, docs/PERFORMANCE.md "DEM: the step against LIGGGHTS"): a
 // sticking contact takes three square roots on its chain (a, sqrt(S_n m*), the spring's rescaling):
 // sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*) (S_t / S_n = 4 G* / E*, a constant of the law), the rotated
-// spring is rescaled by sqrt(len0^2 / len1^2), and |F_t| is taken only when it slips (|F_t|^2 > (mu F_n)^2).
+// spring is rescaled by sqrt(len0^2 / len1^2), and |F_t| is used only when it slips (|F_t|^2 > (mu F_n)^2).
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindlin<T>& p, T r_star, T m_star, T delta,
                                                            const Vec3<T>& n, const Vec3<T>& v_rel, bool friction,
@@ -121,22 +121,28 @@ KOKKOS_FORCEINLINE_FUNCTION ContactForce<T> hertz_mindlin_force(const HertzMindl
   out.force = f_n * n;
   if (!friction) return out;
   const Vec3<T> v_t = v_rel - v_n * n;
-  // the spring of the previous step, rotated into the current tangent plane (its length kept)
+  // Branch-free (selects, no jumps: the host's rows run this over a batch of pairs as one vector loop,
+  // kernels/dem/contact_forces.hpp; a GPU's threads do not diverge). Each select picks between values computed
+  // as the branches would: the results are the branches'. Denominators that a branch would not reach are 1.
+  // The spring of the previous step, rotated into the current tangent plane, its length kept (a zero spring
+  // stays zero: its projection is itself).
   const T len0_2 = norm2(xi);
-  if (len0_2 > T(0)) {
-    xi = xi - dot(xi, n) * n;
-    const T len1_2 = norm2(xi);
-    if (len1_2 > T(0)) xi = kx::sqrt(len0_2 / len1_2) * xi;
-  }
+  const Vec3<T> xr = xi - dot(xi, n) * n;
+  const T len1_2 = norm2(xr);
+  const T keep = len1_2 > T(0) ? kx::sqrt(len0_2 / (len1_2 > T(0) ? len1_2 : T(1))) : T(1);
+  xi = keep * xr;
   xi += dt * v_t;
   const T s_t = T(8) * p.g_star * a;
   const T root_t = root_n * root_ratio;  // sqrt(S_t m*)
   Vec3<T> f_t = -s_t * xi - damp * root_t * v_t;  // eq. (13)
   const T ft2 = norm2(f_t), limit = p.mu * f_n;
-  if (ft2 > limit * limit) {  // eq. (14): Coulomb slip; the spring keeps what the limit allows
-    const T ft = kx::sqrt(ft2);
-    f_t = (limit / ft) * f_t;  // ft > limit >= 0
-    xi = s_t > T(0) ? (T(-1) / s_t) * f_t : Vec3<T>::zero();
+  // eq. (14): Coulomb slip (|F_t| > mu F_n, so |F_t| > 0): F_t scaled to the limit, the spring keeps what the limit allows
+  const bool slip = ft2 > limit * limit;
+  const T scale = slip ? limit / kx::sqrt(slip ? ft2 : T(1)) : T(1);
+  const T back = s_t > T(0) ? T(-1) / (s_t > T(0) ? s_t : T(1)) : T(0);
+  for (int q = 0; q < 3; ++q) {
+    f_t[q] = scale * f_t[q];
+    xi[q] = slip ? back * f_t[q] : xi[q];
   }
   out.force += f_t;
   return out;

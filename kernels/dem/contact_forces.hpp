@@ -11,10 +11,12 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 
 #include "contact/facet_weights.hpp"
 #include "contact/sphere_facet.hpp"
 #include "dem/hertz_mindlin.hpp"
+#include "dem/pair_batch.hpp"
 #include "dem/spheres.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/transpose.hpp"
@@ -106,6 +108,38 @@ KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Inde
 
 }  // namespace detail
 
+namespace detail {
+
+// The host's batched rows (sphere_sphere_rows on a CPU): a block of rows_block spheres per call; its touching
+// pairs are gathered, in row order, into a PairBatch of contiguous arrays, the contact law runs over the batch
+// as one vector loop (dem/pair_batch.cpp: eight laws per AVX-512 instruction, so the chain of square roots and
+// divisions that sets a contact's latency overlaps across pairs), and the results are summed in row order as in
+// the one-sphere body. The blocks, and so the batches, are fixed by the sphere indices, not by the threads: any
+// thread count gives the same bits (the GPU's one-sphere body the same law, not necessarily the same bits).
+inline constexpr Index rows_block = std::is_same<MemSpace, HostSpace>::value ? 16 : 1;
+
+// Listed pair i-j (i at xi_pos, radius ri, in clump body_i, -1: none): d = x_i - x_j, |d|^2 and r_j; whether they
+// touch (closer than r_i + r_j, apart from coincident, not in one clump).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION bool touching(const SphereSet<T>& s, const Vec3<T>& xi_pos, T ri, int body_i, Index j, Vec3<T>& d, T& dist2,
+                                          T& rj) {
+  d = xi_pos - load<3>(s.x, j);
+  dist2 = norm2(d);
+  rj = s.radius(j);
+  const T reach = ri + rj;
+  return dist2 < reach * reach && dist2 > T(0) && !(body_i >= 0 && s.body(j) == body_i);
+}
+
+// A listed pair that does not touch (apart, or both in one clump): its spring dropped (read first: most are zero
+// already), its load zero.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION void drop_pair(const SpringView<T>& hist, const PairLoadView<T>& pair_load, Offset k, bool friction) {
+  if (friction && (hist(k, 0) != T(0) || hist(k, 1) != T(0) || hist(k, 2) != T(0))) store<3>(hist, k, Vec3<T>::zero());
+  for (int c = 0; c < 6; ++c) pair_load(k, c) = T(0);
+}
+
+}  // namespace detail
+
 // Kernel "polymech::dem::sphere_sphere": Hertz-Mindlin forces between listed spheres in contact, over a
 // half list (j > i: each pair computed once), and each sphere's contacts with the analytic planes
 // `planes` (if any; the same arithmetic as sphere_plane_forces, in the same pass over the spheres). A row
@@ -113,6 +147,8 @@ KOKKOS_FORCEINLINE_FUNCTION void plane_contacts(const PlaneContacts<T>& pc, Inde
 // member gets to pair_load(k); sphere_sphere_gather then adds those to each j over the list's transpose,
 // in increasing k. The sums are in a fixed order: any thread count gives the same bits. One tangential
 // spring per pair, hist(k), from i's side (v_rel = i's contact point less j's).
+// On a host the rows go by blocks of detail::rows_block spheres, the contact law vectorised over each
+// block's touching pairs (detail::PairBatch); on a GPU a thread per sphere.
 template <class T>
 void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& list, const SpringView<T>& hist,
                         const PairLoadView<T>& pair_load, const HertzMindlin<T>& p, bool friction, T dt,
@@ -121,53 +157,133 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
   const bool walls = planes.planes.extent(0) > 0;
   // sqrt(4 G* / E*) of both laws once, not per contact (contact::shear_root_ratio; the same bits)
   const T root_pp = contact::shear_root_ratio(p), root_pw = walls ? contact::shear_root_ratio(planes.law) : T(0);
-  Kokkos::parallel_for(
-      "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
-        // the law and dt as locals: the captured copies are doubles in the closure, which the stores to
-        // hist and pair_load may alias for the compiler (it would load them again after every store)
-        const HertzMindlin<T> law = p;
-        const T h = dt, root_ratio = root_pp;
-        const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
-        const T ri = s.radius(i), mi = s.mass(i);
-        const int body_i = clumped ? s.body(i) : -1;
-        Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
-        for (Offset k = list.begin(i); k < list.end(i); ++k) {
-          const Index j = list.neighbor(k);
-          const Vec3<T> d = xi_pos - load<3>(s.x, j);
-          const T dist2 = norm2(d), rj = s.radius(j);
-          const T reach = ri + rj;
-          if (!(dist2 < reach * reach) || !(dist2 > T(0)) || (body_i >= 0 && s.body(j) == body_i)) {  // apart, or one clump
-            if (friction && (hist(k, 0) != T(0) || hist(k, 1) != T(0) || hist(k, 2) != T(0))) store<3>(hist, k, Vec3<T>::zero());
-            for (int c = 0; c < 6; ++c) pair_load(k, c) = T(0);
-            continue;
+  if constexpr (detail::rows_block > 1) {
+    const Index n = list.num_particles, block = detail::rows_block;
+    Kokkos::parallel_for(
+        "polymech::dem::sphere_sphere", range((n + block - 1) / block), [=](const Index blk) {
+          const HertzMindlin<T> law = p;  // locals: the stores below cannot change them
+          const T h = dt, root_ratio = root_pp;
+          const Index first = blk * block, last = first + block < n ? first + block : n;
+          detail::PairBatch<T> b;
+          Vec3<T> f_sum[detail::rows_block], t_sum[detail::rows_block];
+          // the batch's law, then its results in row order (the one-sphere body's sums and stores)
+          const auto flush = [&]() {
+            if (friction)
+              detail::batch_contacts<true>(b, law, root_ratio, h);
+            else
+              detail::batch_contacts<false>(b, law, root_ratio, h);
+            for (int c = 0; c < b.count; ++c) {
+              const Offset k = b.k[c];
+              const int r = b.row[c];
+              const Vec3<T> f{{b.f[0][c], b.f[1][c], b.f[2][c]}}, nxf{{b.nxf[0][c], b.nxf[1][c], b.nxf[2][c]}};
+              if (friction) store<3>(hist, k, Vec3<T>{{b.xi[0][c], b.xi[1][c], b.xi[2][c]}});
+              f_sum[r] += f;
+              t_sum[r] -= b.li[c] * nxf;
+              const T lj = b.lj[c];
+              for (int q = 0; q < 3; ++q) {
+                pair_load(k, q) = f[q];
+                pair_load(k, 3 + q) = -lj * nxf[q];
+              }
+            }
+            b.count = 0;
+          };
+          for (Index i = first; i < last; ++i) {
+            const int r = static_cast<int>(i - first);
+            f_sum[r] = Vec3<T>::zero();
+            t_sum[r] = Vec3<T>::zero();
+            const Vec3<T> xi_pos = load<3>(s.x, i);
+            const T ri = s.radius(i);
+            const int body_i = clumped ? s.body(i) : -1;
+            for (Offset k = list.begin(i); k < list.end(i); ++k) {
+              const Index j = list.neighbor(k);
+              Vec3<T> d;
+              T dist2, rj;
+              if (!detail::touching(s, xi_pos, ri, body_i, j, d, dist2, rj)) {
+                detail::drop_pair(hist, pair_load, k, friction);
+                continue;
+              }
+              const int c = b.count++;
+              b.k[c] = k;
+              b.row[c] = r;
+              b.dist2[c] = dist2;
+              b.ri[c] = ri;
+              b.rj[c] = rj;
+              b.mi[c] = s.mass(i);
+              b.mj[c] = s.mass(j);
+              for (int q = 0; q < 3; ++q) {
+                b.d[q][c] = d[q];
+                b.vi[q][c] = s.v(i, q);
+                b.wi[q][c] = s.omega(i, q);
+                b.vj[q][c] = s.v(j, q);
+                b.wj[q][c] = s.omega(j, q);
+                b.xi[q][c] = friction ? hist(k, q) : T(0);
+              }
+              if (b.count == detail::PairBatch<T>::capacity) flush();
+            }
           }
-          const T dist = kx::sqrt(dist2);
-          const T delta = reach - dist;
-          const Vec3<T> n = (T(1) / dist) * d;  // from j to i
-          // Both ends act at one point, the middle of the overlap (levers r - delta / 2), so the pair's
-          // forces and torques conserve angular momentum exactly (with the lever r each, a tangential
-          // force would leave a couple delta n x f_t: what a clump's angular momentum then shows).
-          const T li = ri - T(0.5) * delta, lj = rj - T(0.5) * delta;
-          const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
-          const T mj = s.mass(j);
-          Vec3<T> xi = detail::spring(hist, k, friction);
-          const auto c = hertz_mindlin_force(law, root_ratio, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, h, xi);
-          if (friction) store<3>(hist, k, xi);
-          const Vec3<T> nxf = cross(n, c.force);
-          f_sum += c.force;
-          t_sum -= li * nxf;
+          if (b.count > 0) flush();
+          for (Index i = first; i < last; ++i) {
+            const int r = static_cast<int>(i - first);
+            const T ri = s.radius(i), mi = s.mass(i);
+            if (walls)
+              detail::plane_contacts(planes, i, load<3>(s.x, i), ri, mi, load<3>(s.v, i), load<3>(s.omega, i), friction, h, root_pw,
+                                     f_sum[r], t_sum[r]);
+            const T inv_inertia = T(2.5) / (mi * ri * ri);
+            for (int q = 0; q < 3; ++q) {
+              s.a(i, q) += f_sum[r][q] / mi;
+              s.alpha(i, q) += inv_inertia * t_sum[r][q];
+            }
+          }
+        });
+  } else {
+    Kokkos::parallel_for(
+        "polymech::dem::sphere_sphere", range(list.num_particles), KOKKOS_LAMBDA(const Index i) {
+          // the law and dt as locals: the captured copies are doubles in the closure, which the stores to
+          // hist and pair_load may alias for the compiler (it would load them again after every store)
+          const HertzMindlin<T> law = p;
+          const T h = dt, root_ratio = root_pp;
+          const Vec3<T> xi_pos = load<3>(s.x, i), vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
+          const T ri = s.radius(i), mi = s.mass(i);
+          const int body_i = clumped ? s.body(i) : -1;
+          Vec3<T> f_sum = Vec3<T>::zero(), t_sum = Vec3<T>::zero();
+          for (Offset k = list.begin(i); k < list.end(i); ++k) {
+            const Index j = list.neighbor(k);
+            Vec3<T> d;
+            T dist2, rj;
+            if (!detail::touching(s, xi_pos, ri, body_i, j, d, dist2, rj)) {
+              detail::drop_pair(hist, pair_load, k, friction);
+              continue;
+            }
+            // (the same arithmetic as detail::batch_contacts, dem/pair_batch.cpp: change both together)
+            const T reach = ri + rj;
+            const T dist = kx::sqrt(dist2);
+            const T delta = reach - dist;
+            const Vec3<T> n = (T(1) / dist) * d;  // from j to i
+            // Both ends act at one point, the middle of the overlap (levers r - delta / 2), so the pair's
+            // forces and torques conserve angular momentum exactly (with the lever r each, a tangential
+            // force would leave a couple delta n x f_t: what a clump's angular momentum then shows).
+            const T li = ri - T(0.5) * delta, lj = rj - T(0.5) * delta;
+            const Vec3<T> v_rel = vi + cross(wi, (-li) * n) - load<3>(s.v, j) - cross(load<3>(s.omega, j), lj * n);
+            const T mj = s.mass(j);
+            Vec3<T> xi = detail::spring(hist, k, friction);
+            const auto c = hertz_mindlin_force(law, root_ratio, ri * rj / reach, mi * mj / (mi + mj), delta, n, v_rel, friction, h, xi);
+            if (friction) store<3>(hist, k, xi);
+            const Vec3<T> nxf = cross(n, c.force);
+            f_sum += c.force;
+            t_sum -= li * nxf;
+            for (int q = 0; q < 3; ++q) {
+              pair_load(k, q) = c.force[q];
+              pair_load(k, 3 + q) = -lj * nxf[q];
+            }
+          }
+          if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, h, root_pw, f_sum, t_sum);
+          const T inv_inertia = T(2.5) / (mi * ri * ri);
           for (int q = 0; q < 3; ++q) {
-            pair_load(k, q) = c.force[q];
-            pair_load(k, 3 + q) = -lj * nxf[q];
+            s.a(i, q) += f_sum[q] / mi;
+            s.alpha(i, q) += inv_inertia * t_sum[q];
           }
-        }
-        if (walls) detail::plane_contacts(planes, i, xi_pos, ri, mi, vi, wi, friction, h, root_pw, f_sum, t_sum);
-        const T inv_inertia = T(2.5) / (mi * ri * ri);
-        for (int q = 0; q < 3; ++q) {
-          s.a(i, q) += f_sum[q] / mi;
-          s.alpha(i, q) += inv_inertia * t_sum[q];
-        }
-      });
+        });
+  }
 }
 
 // Kernel "polymech::dem::sphere_sphere_gather": each sphere j adds what its pairs as second member give it
