@@ -3,7 +3,9 @@
 // nodes, and a meshed flat wall against the analytic plane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "contact/sphere_facet.hpp"
@@ -404,4 +406,135 @@ TEST(SphereFacet, ADeformingSurfaceReturnsTheForcesToItsNodes) {
     EXPECT_NEAR(node_moment[k], -moment_sum[k], 1e-12 * norm(force_sum) * 0.03) << k;
   }
   EXPECT_GT(norm(force_sum), 0.0);
+}
+
+// The sphere-sphere rows (on a host: blocks of 16 spheres, the law vectorised over each block's touching pairs,
+// dem/pair_batch.cpp) and the gather against a plain pair-by-pair sum of contact::hertz_mindlin_force: a random
+// cloud dense enough that a block holds more touching pairs than one batch (64), springs of every size (some
+// pairs slip, some are new, some listed pairs apart), spheres of two clumps. Forces, torques (both members) and
+// the updated springs agree to round-off; every listed pair apart has its spring dropped.
+TEST(SphereSphere, RowsAndGatherAreThePairByPairSums) {
+  const pm::Index n = 320;
+  const double side = 0.1, skin = 0.004, dt = 1e-6;
+  const dm::HertzMindlin<double> law{3e7, 1.2e7, dm::damping_ratio(0.5), 0.5};
+  unsigned state = 12345u;
+  auto uniform = [&state](double lo, double hi) {
+    state = state * 1664525u + 1013904223u;
+    return lo + (hi - lo) * ((state >> 8) & 0xffffffu) / double(0x1000000);
+  };
+  dm::SphereSet<double> s;
+  dm::allocate(s, n, "s_");
+  s.body = pm::View1<int>("body", std::size_t(n));
+  auto hx = Kokkos::create_mirror_view(s.x);
+  auto hv = Kokkos::create_mirror_view(s.v);
+  auto hw = Kokkos::create_mirror_view(s.omega);
+  auto hr = Kokkos::create_mirror_view(s.radius);
+  auto hm = Kokkos::create_mirror_view(s.mass);
+  auto hb = Kokkos::create_mirror_view(s.body);
+  for (pm::Index i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      hx(i, k) = uniform(0.0, side);
+      hv(i, k) = uniform(-1.0, 1.0);
+      hw(i, k) = uniform(-50.0, 50.0);
+    }
+    hr(i) = uniform(0.009, 0.011);
+    hm(i) = 2650.0 * 4.0 / 3.0 * ct::kPi * hr(i) * hr(i) * hr(i);
+    hb(i) = i < 40 ? int(i / 20) : -1;  // two clumps of 20 (their pairs never touch)
+  }
+  Kokkos::deep_copy(s.x, hx);
+  Kokkos::deep_copy(s.v, hv);
+  Kokkos::deep_copy(s.omega, hw);
+  Kokkos::deep_copy(s.radius, hr);
+  Kokkos::deep_copy(s.mass, hm);
+  Kokkos::deep_copy(s.body, hb);
+  // the half list within r_i + r_j + skin (brute force) and a spring per pair
+  std::vector<pm::Offset> offsets{0};
+  std::vector<pm::Index> neighbors;
+  auto dist2 = [&](pm::Index i, pm::Index j) {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += (hx(i, k) - hx(j, k)) * (hx(i, k) - hx(j, k));
+    return d2;
+  };
+  for (pm::Index i = 0; i < n; ++i) {
+    for (pm::Index j = i + 1; j < n; ++j)
+      if (dist2(i, j) < (hr(i) + hr(j) + skin) * (hr(i) + hr(j) + skin)) neighbors.push_back(j);
+    offsets.push_back(static_cast<pm::Offset>(neighbors.size()));
+  }
+  const auto pairs = static_cast<pm::Offset>(neighbors.size());
+  pm::neighbors::NeighborList list;
+  list.offsets = Kokkos::View<pm::Offset*, pm::MemSpace>("offsets", offsets.size());
+  list.neighbors = Kokkos::View<pm::Index*, pm::MemSpace>("neighbors", neighbors.size());
+  Kokkos::deep_copy(list.offsets, Kokkos::View<pm::Offset*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(offsets.data(), offsets.size()));
+  Kokkos::deep_copy(list.neighbors, Kokkos::View<pm::Index*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(neighbors.data(), neighbors.size()));
+  list.num_particles = n;
+  list.num_pairs = pairs;
+  list.kind = pm::neighbors::ListKind::half;
+  dm::SpringView<double> hist("hist", std::size_t(pairs));
+  auto hh = Kokkos::create_mirror_view(hist);
+  for (pm::Offset k = 0; k < pairs; ++k) {
+    const double size = k % 5 == 0 ? 0.0 : k % 5 == 1 ? 1e-3 : 1e-6;  // new, slipping, sticking
+    for (int q = 0; q < 3; ++q) hh(k, q) = size * uniform(-1.0, 1.0);
+  }
+  Kokkos::deep_copy(hist, hh);
+  // the reference: each listed pair in order, the law on the host
+  std::vector<V3> f_ref(n, V3::zero()), t_ref(n, V3::zero());
+  std::vector<V3> xi_ref(static_cast<std::size_t>(pairs), V3::zero());
+  int touching = 0, most_in_a_block = 0, in_block = 0, slipping = 0;
+  for (pm::Index i = 0; i < n; ++i) {
+    if (i % 16 == 0) in_block = 0;
+    for (pm::Offset k = offsets[i]; k < offsets[i + 1]; ++k) {
+      const pm::Index j = neighbors[std::size_t(k)];
+      const double reach = hr(i) + hr(j), d2 = dist2(i, j);
+      if (!(d2 < reach * reach) || (hb(i) >= 0 && hb(i) == hb(j))) continue;
+      ++touching;
+      most_in_a_block = std::max(most_in_a_block, ++in_block);
+      const double dist = std::sqrt(d2), delta = reach - dist;
+      V3 n_ji, vi, wi, vj, wj, xi;
+      for (int q = 0; q < 3; ++q) {
+        n_ji[q] = (hx(i, q) - hx(j, q)) / dist;
+        vi[q] = hv(i, q), wi[q] = hw(i, q), vj[q] = hv(j, q), wj[q] = hw(j, q), xi[q] = hh(k, q);
+      }
+      const double li = hr(i) - 0.5 * delta, lj = hr(j) - 0.5 * delta;
+      const V3 v_rel = vi + cross(wi, (-li) * n_ji) - vj - cross(wj, lj * n_ji);
+      const auto c = dm::hertz_mindlin_force(law, hr(i) * hr(j) / reach, hm(i) * hm(j) / (hm(i) + hm(j)), delta, n_ji, v_rel, true, dt, xi);
+      xi_ref[std::size_t(k)] = xi;
+      const V3 f_t = c.force - dot(c.force, n_ji) * n_ji;
+      if (c.normal > 0 && norm(f_t) > (1.0 - 1e-9) * law.mu * c.normal) ++slipping;
+      const V3 nxf = cross(n_ji, c.force);
+      f_ref[std::size_t(i)] += c.force;
+      f_ref[std::size_t(j)] -= c.force;
+      t_ref[std::size_t(i)] -= li * nxf;
+      t_ref[std::size_t(j)] -= lj * nxf;
+    }
+  }
+  ASSERT_GT(most_in_a_block, 64) << "the cloud must fill a batch";
+  dm::body_forces(s, V3::zero());
+  dm::PairLoadView<double> pair_load("pair_load", std::size_t(pairs));
+  pm::neighbors::ListTranspose transposed;
+  pm::neighbors::transpose(list, transposed, n);
+  dm::sphere_sphere_rows(s, list, hist, pair_load, law, true, dt);
+  dm::sphere_sphere_gather(s, transposed, pair_load);
+  auto ha = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.a);
+  auto hal = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.alpha);
+  Kokkos::deep_copy(hh, hist);
+  double f_max = 0.0, t_max = 0.0;
+  for (pm::Index i = 0; i < n; ++i) {
+    f_max = std::max(f_max, norm(f_ref[std::size_t(i)]));
+    t_max = std::max(t_max, norm(t_ref[std::size_t(i)]));
+  }
+  for (pm::Index i = 0; i < n; ++i) {
+    const double inertia = 0.4 * hm(i) * hr(i) * hr(i);
+    for (int q = 0; q < 3; ++q) {
+      EXPECT_NEAR(ha(i, q) * hm(i), f_ref[std::size_t(i)][q], 1e-12 * f_max) << i;
+      EXPECT_NEAR(hal(i, q) * inertia, t_ref[std::size_t(i)][q], 1e-12 * t_max) << i;
+    }
+  }
+  for (pm::Offset k = 0; k < pairs; ++k) {
+    const V3& want = xi_ref[std::size_t(k)];
+    for (int q = 0; q < 3; ++q) EXPECT_NEAR(hh(k, q), want[q], 1e-12 * (norm(want) + 1e-9)) << k;
+  }
+  std::printf("%lld listed pairs, %d touching, at most %d in a block of 16 spheres, %d at the Coulomb limit\n",
+              static_cast<long long>(pairs), touching, most_in_a_block, slipping);
+  EXPECT_GT(slipping, 0);
+  EXPECT_LT(touching, static_cast<int>(pairs));
 }
