@@ -192,8 +192,10 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
             f_sum[r] = Vec3<T>::zero();
             t_sum[r] = Vec3<T>::zero();
             const Vec3<T> xi_pos = load<3>(s.x, i);
-            const T ri = s.radius(i);
+            const T ri = s.radius(i), mi = s.mass(i);
             const int body_i = clumped ? s.body(i) : -1;
+            // i's motion read once per row (locals: the batch's stores cannot change them)
+            const Vec3<T> vi = load<3>(s.v, i), wi = load<3>(s.omega, i);
             for (Offset k = list.begin(i); k < list.end(i); ++k) {
               const Index j = list.neighbor(k);
               Vec3<T> d;
@@ -208,12 +210,12 @@ void sphere_sphere_rows(const SphereSet<T>& s, const neighbors::NeighborList& li
               b.dist2[c] = dist2;
               b.ri[c] = ri;
               b.rj[c] = rj;
-              b.mi[c] = s.mass(i);
+              b.mi[c] = mi;
               b.mj[c] = s.mass(j);
               for (int q = 0; q < 3; ++q) {
                 b.d[q][c] = d[q];
-                b.vi[q][c] = s.v(i, q);
-                b.wi[q][c] = s.omega(i, q);
+                b.vi[q][c] = vi[q];
+                b.wi[q][c] = wi[q];
                 b.vj[q][c] = s.v(j, q);
                 b.wj[q][c] = s.omega(j, q);
                 b.xi[q][c] = friction ? hist(k, q) : T(0);
