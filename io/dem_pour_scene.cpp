@@ -127,6 +127,14 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   c.friction = contact.real("friction", 0.0, pl::factor(0.0, 10.0));
   if (c.restitution < 1.0 && !fx.has("damping")) contact.fail("restitution", "< 1 needs the effect \"damping\" in model.effects");
   if (c.friction > 0 && !fx.has("friction")) contact.fail("friction", "> 0 needs the effect \"friction\" in model.effects");
+  // a denser bed (docs/METHODS.md "A denser bed: the pour's friction"): a lower mu while the gravel falls and settles
+  const bool pour_mu = contact.has("pour_friction");
+  if (pour_mu) {
+    c.pour_friction = contact.real("pour_friction", pl::factor(0.0, 10.0));
+    if (!fx.has("friction")) contact.fail("pour_friction", "needs the effect \"friction\" in model.effects");
+  }
+  if (contact.has("pour_friction_until") && !pour_mu) contact.fail("pour_friction_until", "is given without contact.pour_friction");
+  const double pour_until = pour_mu ? contact.real("pour_friction_until", 0.0, Range{0.0, 1e3, false, false, "s (0: wheel.start)"}) : 0.0;
   contact.finish();
   const auto wheel = root.optional_table("wheel");
   if (fx.has("fe_surfaces") && !wheel)
@@ -175,6 +183,16 @@ DemPourScene load_dem_pour_scene(const std::filesystem::path& file, const SceneO
   const SceneTable time = root.table("time");
   out.duration = time.real("duration", pl::duration());
   if (wheel) read_wheel(*wheel, p, out.duration, c.wheel);
+  if (pour_mu) {  // the pour's friction ends by the set-down (the wheel meets the scene's friction) and within the run
+    c.pour_friction_until = pour_until > 0 ? pour_until : (wheel ? c.wheel.start : 0.0);
+    if (!(c.pour_friction_until > 0))
+      contact.fail("pour_friction_until", "is missing: the time (s) until which contact.pour_friction holds (without a wheel there is no default)");
+    if (wheel && c.pour_friction_until > c.wheel.start)
+      contact.fail("pour_friction_until", "= " + format_number(c.pour_friction_until) + " s is after wheel.start = " + format_number(c.wheel.start) +
+                                              " s: the wheel must meet the scene's friction");
+    if (c.pour_friction_until >= out.duration)
+      contact.fail("pour_friction_until", "= " + format_number(c.pour_friction_until) + " s is not before time.duration = " + format_number(out.duration) + " s");
+  }
   if (tyre && wheel) {  // the tyre's section from the wheel's size and the crown radius (solid::tyre_section)
     const solid::TyreSpec ts = dem::tyre_spec(c.wheel, c.tyre);
     try {

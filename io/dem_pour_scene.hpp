@@ -5,7 +5,7 @@
 //
 //   [model] kind = "dem_pour", effects = ["friction", "damping", "clumps"]
 //   [particle] youngs_modulus, poisson_ratio, density     [wall] youngs_modulus, poisson_ratio
-//   [contact] restitution, friction
+//   [contact] restitution, friction, pour_friction (mu until pour_friction_until, s; default wheel.start)
 //   [gravel] count, shapes = ["cylinder", "cone", "cube"] (or ["sphere"]), radius_min, radius_max, seed
 //   [bin] size = [lx, ly, lz], release_at (s; > 0: the wall x = lx opens, a heap forms)
 //   [time] duration, dt (0: dt_safety x the limit), dt_safety

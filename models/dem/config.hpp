@@ -73,6 +73,9 @@ struct Config {
   Material wall;                 // planes and FE surfaces
   double restitution = 1.0;      // e of sphere-sphere and sphere-wall contacts (the `damping` effect)
   double friction = 0.0;         // mu (the `friction` effect)
+  double pour_friction = -1.0;   // mu of the sphere-sphere and sphere-plane contacts before pour_friction_until (s), the
+  double pour_friction_until = 0.0;  // `friction` effect's mu from then on: a denser bed (< 0: none; docs/METHODS.md
+                                     // "A denser bed: the pour's friction")
   std::array<double, 3> gravity{};
   double dt = 0.0;               // <= 0: dt_safety x the time-step limit
   double dt_safety = 0.5;

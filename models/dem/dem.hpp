@@ -81,6 +81,12 @@ class Dem {
     const auto& w = cfg_.wall;
     pp_ = law(p, p, beta, mu);
     pw_ = law(p, w, beta, mu);
+    if (friction_ && cfg_.pour_friction >= 0) {  // the pour's laws, to its step count (a step index: restarts agree)
+      if (!(cfg_.pour_friction_until > 0)) throw std::invalid_argument("dem: pour_friction needs pour_friction_until > 0 (s)");
+      pour_pp_ = law(p, p, beta, cfg_.pour_friction);
+      pour_pw_ = law(p, w, beta, cfg_.pour_friction);
+      pour_steps_ = static_cast<std::int64_t>(std::ceil(cfg_.pour_friction_until / cfg_.dt - 1e-9));
+    }
     pf_ = tyre_ ? law(p, Material{cfg_.tyre.tread_young, cfg_.tyre.tread_poisson, 0.0}, beta, mu) : pw_;  // spheres on the tread
     allocate_spheres();
     pairs_.set_sizes(s_.radius);  // sphere pairs within r_i + r_j + skin (LIGGGHTS' rule), not 2 r_max + skin
@@ -160,15 +166,17 @@ class Dem {
         pair_load_ = PairLoadView<T>(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string("polymech::dem::pair_load")), np + np / 8 + 16);
       transposed_at_ = pairs_.builds();
     }
+    const bool pouring = clock_.index() < pour_steps_;  // the pour's friction (Config::pour_friction)
+    const HertzMindlin<T>& pp = pouring ? pour_pp_ : pp_;
     PlaneContacts<T> walls;
     if (planes_.extent(0) > 0) {
       if (planes_at_ != pairs_.builds()) {  // the planes' Verlet mask, with the sphere list
         near_planes(s_, planes_, T(skin(cfg_, clump_init_)), near_planes_, plane_history_, friction_);
         planes_at_ = pairs_.builds();
       }
-      walls = PlaneContacts<T>{planes_, plane_history_, near_planes_, pw_};
+      walls = PlaneContacts<T>{planes_, plane_history_, near_planes_, pouring ? pour_pw_ : pw_};
     }
-    sphere_sphere_rows(s_, pairs_.list(), pairs_.history().values, pair_load_, pp_, friction_, dt, walls);
+    sphere_sphere_rows(s_, pairs_.list(), pairs_.history().values, pair_load_, pp, friction_, dt, walls);
     if (tyre_) {
       if (tyre_drive_.placed()) tyre_contacts(dt);
     } else if (surfaces_) {
@@ -414,6 +422,8 @@ class Dem {
   ClumpSet<T> clumps_set_;
   TimeStepLimit limit_;
   HertzMindlin<T> pp_, pw_, pf_;  // sphere-sphere, sphere-wall, sphere-facet
+  HertzMindlin<T> pour_pp_, pour_pw_;  // the same with the pour's friction, for the first pour_steps_ steps
+  std::int64_t pour_steps_ = 0;
   SphereSet<T> s_;
   PlaneView<T> planes_;
   SpringView<T> plane_history_;

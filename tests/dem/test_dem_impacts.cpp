@@ -298,3 +298,49 @@ TEST(DemHardCases, ASphereRollingAcrossFacetEdgesKeepsItsSpringAndMatchesThePlan
     EXPECT_NEAR(mesh.omega[c], plane.omega[c], 1e-4) << c;
   }
 }
+
+TEST(DemHardCases, ThePoursFrictionHoldsUntilItsTimeThenTheScenesFriction) {
+  // Config::pour_friction (a denser bed: a lower mu while the gravel settles): a sphere sliding on the floor at
+  // 1 m/s with the pour's mu = 0 keeps its speed and does not spin until pour_friction_until = 20 ms; from then on
+  // the scene's mu = 0.5 brakes it at mu g (Coulomb sliding) until it rolls at 5/7 of its speed after 58 ms.
+  dm::Config c;
+  c.particle = {1e7, 0.3, 2500};
+  const double r = 0.005, mu = 0.5, g = 9.81, v0 = 1.0, t0 = 0.02;
+  const double m = 2500 * 4.0 / 3.0 * dm::kPi * r * r * r;
+  const double e_star = 1e7 / (1 - 0.3 * 0.3);  // on a rigid wall
+  const double d_rest = std::pow(m * g / (4.0 / 3.0 * e_star * std::sqrt(r)), 2.0 / 3.0);  // Hertz: m g = 4/3 E* sqrt(R) d^1.5
+  dm::SphereInit s;
+  s.radius = r;
+  s.position = {0, 0, r - d_rest};
+  s.velocity = {v0, 0, 0};
+  c.spheres = {s};
+  c.planes = {dm::PlaneInit{{0, 0, 0}, {0, 0, 1}}};
+  c.gravity = {0, 0, -g};
+  c.friction = mu;
+  c.pour_friction = 0.0;
+  c.pour_friction_until = t0;
+  c.restitution = 0.3;
+  c.max_speed = 1.5;
+  c.effects = pm::EffectSet::resolve({"friction", "damping"}, dm::effect_table());
+  dm::Dem<double> model(c);
+  const auto to = [&](double t) {
+    while (model.time() < t - 0.5 * model.dt()) model.step();
+    return model.sphere(0);
+  };
+  const auto before = to(t0 - 2 * model.dt());
+  EXPECT_NEAR(before.v[0], v0, 1e-12) << "the pour's mu = 0 must leave the sliding speed";
+  EXPECT_NEAR(before.omega[1], 0.0, 1e-12);
+  const auto a = to(t0 + 0.01), b = to(t0 + 0.04);
+  const double decel = (a.v[0] - b.v[0]) / 0.03;
+  std::printf("before %.3f s: v %.12f m/s; after: %.6f -> %.6f m/s over 30 ms: deceleration %.4f m/s^2 (mu g %.4f); spin %.2f rad/s\n",
+              t0, before.v[0], a.v[0], b.v[0], decel, mu * g, b.omega[1]);
+  EXPECT_NEAR(decel / (mu * g), 1.0, 0.02);
+  EXPECT_GT(b.omega[1], 0.0);  // the friction spins it up (about +y for motion along +x)
+  const auto rolled = to(t0 + 0.1);
+  EXPECT_NEAR(rolled.v[0] / v0, 5.0 / 7.0, 0.01) << "rolling: 5/7 of the sliding speed";
+  // without the pour's friction it brakes from the start
+  c.pour_friction = -1.0;
+  dm::Dem<double> plain(c);
+  while (plain.time() < t0 - 2.5 * plain.dt()) plain.step();
+  EXPECT_LT(plain.sphere(0).v[0], v0 - 0.9 * mu * g * t0);
+}

@@ -148,6 +148,45 @@ TEST(DemScenes, WheelDampingKey) {
   polymech::testing::expect_load_error(rigid, pour, line_of(rigid, "damping = 1e8"), {"wheel.damping", "explicit damper", "mass 100 kg"});
 }
 
+// [contact] pour_friction and pour_friction_until (a denser bed, dem::Config::pour_friction): until defaults to
+// wheel.start; after it, at or past the duration, without the friction effect, or without pour_friction: refused.
+TEST(DemScenes, PourFrictionKeys) {
+  const char* src = std::getenv("POLYMECH_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  const auto read = [&](const char* name) {
+    std::ifstream in(fs::path(src) / "scenes" / "dem" / name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::string wheel = read("wheel_gravel_coarse.toml"), pour_only = read("gravel_pour.toml");
+  const auto pour = [](const fs::path& p) { io::load_dem_pour_scene(p); };
+  const auto with = [](const std::string& base, const std::string& keys) { return replace_once(base, "friction = 0.5", "friction = 0.5\n" + keys); };
+  const fs::path file = fs::temp_directory_path() / "polymech_test_pour_friction.toml";
+  {
+    std::ofstream out(file);
+    out << with(wheel, "pour_friction = 0.1");
+  }
+  const auto c = io::load_dem_pour_scene(file).config;
+  EXPECT_EQ(c.pour_friction, 0.1);
+  EXPECT_EQ(c.pour_friction_until, c.wheel.start);  // the default: to the set-down
+  fs::remove(file);
+  EXPECT_LT(io::load_dem_pour_scene(fs::path(src) / "scenes" / "dem" / "wheel_gravel_coarse.toml").config.pour_friction, 0.0);  // none
+  const std::string late = with(wheel, "pour_friction = 0.1\npour_friction_until = 1.2");
+  polymech::testing::expect_load_error(late, pour, line_of(late, "pour_friction_until = 1.2"), {"contact.pour_friction_until", "after wheel.start"});
+  const std::string negative = with(wheel, "pour_friction = -0.1");
+  polymech::testing::expect_load_error(negative, pour, line_of(negative, "pour_friction = -0.1"), {"contact.pour_friction"});
+  const std::string alone = with(wheel, "pour_friction_until = 0.5");
+  polymech::testing::expect_load_error(alone, pour, line_of(alone, "pour_friction_until = 0.5"), {"contact.pour_friction_until", "without contact.pour_friction"});
+  const std::string no_time = with(pour_only, "pour_friction = 0.1");
+  polymech::testing::expect_load_error(no_time, pour, line_of(no_time, "[contact]"), {"contact.pour_friction_until", "is missing"});
+  const std::string past = with(pour_only, "pour_friction = 0.1\npour_friction_until = 100.0");
+  polymech::testing::expect_load_error(past, pour, line_of(past, "pour_friction_until = 100.0"), {"contact.pour_friction_until", "time.duration"});
+  std::string frictionless = replace_once(with(wheel, "pour_friction = 0.1"), "\"friction\", ", "");
+  frictionless = replace_once(frictionless, "friction = 0.5\n", "");
+  polymech::testing::expect_load_error(frictionless, pour, line_of(frictionless, "pour_friction = 0.1"), {"contact.pour_friction", "effect \"friction\""});
+}
+
 // [tyre] wall = "smeared" | "layered" | "belted_rebar" (issue 37: the layered walls need an odd cells[2] >= 3), substeps
 // and crown_radius.
 TEST(DemScenes, TyreWallKey) {
