@@ -2,13 +2,15 @@
 """The wheel's sinkage and tractive force against the bed's packing fraction (seed 002 paper 2, sec. 4; issue 37):
 beds of the same grains poured with a lower friction while they settle (`[contact] pour_friction`, docs/METHODS.md
 "A denser bed: the pour's friction") are denser; each run's summary.json gives the packing fraction, the steady
-stage's rim sinkage (and the tread's) and its tractive force.
+stage's rim sinkage (and the tread's) and its tractive force; the packing fraction and bed height are the bed's as
+the wheel meets it (summary `bed_at_set_down`; a summary without it: its packing_fraction, the run's end).
 
     /usr/bin/python3 bench/plot_bed_density.py --out docs/figures/dem/wheel_bed_density.png \
         --csv docs/figures/dem/wheel_bed_density.csv \
         --run "rigid wheel" "mu_p 0.5 (poured)" out/s15/summary.json --run "rigid wheel" "mu_p 0.1" out/s15_mu0.1/summary.json ...
 
-Each --run SERIES LABEL SUMMARY adds one point to SERIES (one line per series, points in the order given). The
+Each --run SERIES LABEL SUMMARY adds one point to SERIES (one line per series, points in the order given);
+SUMMARY@BED takes the bed's packing and height from the summary BED (another run of the same pour). The
 paper's 53.6 mm rim sinkage and zero traction are drawn. Writes the points to --csv. Optional, outside ctest.
 """
 import argparse
@@ -26,9 +28,15 @@ FIELDS = ["series", "label", "packing_fraction", "bed_height", "sinkage_mm", "tr
 
 
 def point(series, label, path):
+    path, _, bed_path = path.partition("@")  # SUMMARY@BED: the bed's numbers from BED (a run of the same pour)
     with open(path) as f:
         s = json.load(f)
-    return {"series": series, "label": label, "packing_fraction": s["packing_fraction"], "bed_height": s["bed_height"],
+    b = s
+    if bed_path:
+        with open(bed_path) as f:
+            b = json.load(f)
+    bed = b.get("bed_at_set_down") or {"packing_fraction": b["packing_fraction"], "bed_height": b["bed_height"]}
+    return {"series": series, "label": label, "packing_fraction": bed["packing_fraction"], "bed_height": bed["bed_height"],
             "sinkage_mm": s["sinkage_mm"], "tread_sinkage_mm": s.get("tread_sinkage_mm", s["sinkage_mm"]),
             "vertical_force": s["vertical_force"], "tractive_force": s["tractive_force"], "spheres": s["spheres"],
             "summary": path}

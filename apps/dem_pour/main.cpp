@@ -59,6 +59,9 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   const bool wheel = c.wheel.enabled();
   cs.records.keep("dem_pour/series", series);
   if (wheel) cs.records.keep("dem_pour/wheel", wheel_series);
+  // the bed as the wheel meets it (the summary's packing_fraction is the run's end, after the wheel has passed)
+  pm::apps::Series set_down({"time", "packing_fraction", "bed_height"});
+  if (wheel) cs.records.keep("dem_pour/bed_at_set_down", set_down);
   cs.hooks.sample_every = scene.sample_every;
   cs.hooks.sample_at_start = true;
   cs.hooks.sample = [&](std::int64_t) {
@@ -70,6 +73,10 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
   const auto release_step = scene.pour.release_at > 0 ? static_cast<std::int64_t>(std::llround(scene.pour.release_at / model.dt())) : -1;
   cs.after_step = [&](std::int64_t k) {
     if (k == release_step) model.move_plane(dm::kReleaseWall, {1e3, 0.0, 0.0});
+    if (wheel && set_down.empty() && model.time() >= c.wheel.start - 0.5 * model.dt()) {
+      const auto b = dm::settled_bed(dm::sphere_rows(model), scene.pour);
+      set_down.append({model.time(), b.measured ? b.packing_fraction : NAN, b.hi[2] + scene.pour.radius_max});
+    }
   };
   cs.hooks.watchdog.keep_last_good = true;
   const auto stats = cs.run([&](auto& hooks, std::int64_t n) { return pm::models::run(model, n, hooks); });
@@ -102,6 +109,10 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
     j["driving_torque"] = mean(means.torque);
     j["steady_stage_from"] = means.from;
     j["paper_sinkage_mm"] = 53.6;
+    if (!set_down.empty())  // the settled bed before the wheel (packing_fraction below: the run's end)
+      j["bed_at_set_down"] = {{"time", set_down["time"][0]},
+                              {"packing_fraction", std::isfinite(set_down["packing_fraction"][0]) ? nlohmann::json(set_down["packing_fraction"][0]) : nlohmann::json(nullptr)},
+                              {"bed_height", set_down["bed_height"][0]}};
     j["wheel"] = {{"radius", c.wheel.radius}, {"width", c.wheel.width}, {"mass", c.wheel.mass}, {"load", c.wheel.load}, {"damping", c.wheel.damping},
                   {"speed", c.wheel.speed}, {"slip", c.wheel.slip}, {"start", c.wheel.start}, {"facets_around", c.wheel.around},
                   {"facets_across", c.wheel.across}, {"bed_level", w.bed_level}, {"travel", w.centre[0] - c.wheel.x_start},
@@ -119,6 +130,9 @@ int run_case(const pm::io::DemPourScene& scene, const pm::apps::CommonOptions& o
                 "tyre: 53.6), vertical force %.4g N (load %.4g), tractive force %.4g N, driving torque %.4g N m (wheel.csv)\n",
                 w.time, w.centre[0] - c.wheel.x_start, means.from, means.sinkage, means.vertical, c.wheel.load, means.tractive, means.torque);
   }
+  j["friction"] = c.friction;
+  if (c.pour_friction >= 0)  // a denser bed: the pour's lower friction (docs/METHODS.md)
+    j["pour_friction"] = {{"mu", c.pour_friction}, {"until", c.pour_friction_until}};
   j["packing_fraction"] = bed.measured ? nlohmann::json(bed.packing_fraction) : nlohmann::json(nullptr);
   if (!bed.measured) j["packing_fraction_note"] = "the bed is thinner than 2 radius_max: nothing to measure (pour more particles)";
   j["bed_box"] = {{"lo", lo}, {"hi", hi}};
