@@ -43,14 +43,15 @@ def main():
         wheel, track = files(prefix)
         w = read(wheel)
         t = [1e3 * x for x in w["time_from_start"]]
-        ax[0][0].plot(t, [1e-3 * x for x in w["vertical_force"]], label=label)
-        ax[0][1].plot(t, [1e-3 * x for x in w["tractive_force"]], label=label)
-        ax[1][0].plot(t, w["sinkage_mm"], label=label + " (rim)")
+        line, = ax[0][0].plot(t, [1e-3 * x for x in w["vertical_force"]], label=label)
+        colour = line.get_color()  # one colour per run in every panel
+        ax[0][1].plot(t, [1e-3 * x for x in w["tractive_force"]], color=colour, label=label)
+        ax[1][0].plot(t, w["sinkage_mm"], color=colour, label=label + " (rim)")
         if "tread_sinkage_mm" in w and any(abs(x - y) > 1e-9 for x, y in zip(w["tread_sinkage_mm"], w["sinkage_mm"])):
-            ax[1][0].plot(t, w["tread_sinkage_mm"], "--", label=label + " (tread's lowest point)")
+            ax[1][0].plot(t, w["tread_sinkage_mm"], "--", color=colour, label=label + " (tread's lowest point)")
         if os.path.exists(track):
             tr = read(track)
-            ax[1][1].plot(tr["y"], [1e3 * z for z in tr["surface_height"]], label=label)
+            ax[1][1].plot(tr["y"], [1e3 * z for z in tr["surface_height"]], color=colour, label=label)
     load = read(files(a.run[0][1])[0])["load"]
     ax[0][0].axhline(1e-3 * max(load), color="k", lw=0.8, ls=":", label="load")
     ax[1][0].axhline(PAPER_SINKAGE_MM, color="k", lw=0.8, ls=":", label="paper (FE tyre, R 5-7 mm gravel)")
