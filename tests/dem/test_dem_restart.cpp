@@ -71,3 +71,28 @@ TEST(DemRestart, ARestartedPourContinuesBitForBit) {
   EXPECT_EQ(spheres_that_differ(whole, restarted, c.spheres.size()), 0);
   EXPECT_GT(spheres_that_differ(whole, forgetful, c.spheres.size()), 10);
 }
+
+TEST(DemRestart, ARestartAcrossThePoursFrictionSwitchContinuesBitForBit) {
+  // Config::pour_friction: the pour settles with mu_p = 0.1 until a time 500 steps after the checkpoint, then has
+  // the scene's mu. The switch is a step index from the configuration, so the restarted run switches at the same
+  // step as the uninterrupted one; a run without the pour's friction departs from both (the switch mattered).
+  dm::Config c = pour_onto_a_meshed_floor();
+  dm::Dem<double> probe(c);  // the step, to place the switch
+  const std::int64_t first = static_cast<std::int64_t>(0.07 / probe.dt()), second = 1000;
+  c.pour_friction = 0.1;
+  c.pour_friction_until = (first + 500) * probe.dt();
+  dm::Dem<double> whole(c);
+  pm::models::run(whole, first);
+  pm::models::Archive a;
+  whole.save(a, "dem/");
+  dm::Dem<double> restarted(c);
+  restarted.load(a, "dem/");
+  dm::Config plain_config = c;
+  plain_config.pour_friction = -1.0;
+  dm::Dem<double> plain(plain_config);
+  pm::models::run(plain, first + second);
+  pm::models::run(whole, second);
+  pm::models::run(restarted, second);
+  EXPECT_EQ(spheres_that_differ(whole, restarted, c.spheres.size()), 0);
+  EXPECT_GT(spheres_that_differ(whole, plain, c.spheres.size()), 10);
+}
